@@ -1,0 +1,44 @@
+# The two commands of the README:
+#   make demo   installs dependencies, builds (Release) and runs the built-in demo
+#   make test   installs dependencies, builds and runs every test, then again under ASan+UBSan
+JOBS   ?= $(shell nproc)
+OUT    ?= out/demo
+CMAKE  := cmake
+RELEASE_DIR  := build/release
+SANITIZE_DIR := build/sanitize
+
+.PHONY: deps build demo test test-release test-sanitize bench format clean
+
+deps:
+	bash scripts/install-deps.sh
+
+build: deps
+	$(CMAKE) -S . -B $(RELEASE_DIR) -DCMAKE_BUILD_TYPE=Release
+	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS)
+
+demo: deps
+	$(CMAKE) -S . -B $(RELEASE_DIR) -DCMAKE_BUILD_TYPE=Release
+	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target animkit-cli
+	$(RELEASE_DIR)/apps/cli/animkit demo --out $(OUT)
+
+test-release: deps
+	$(CMAKE) -S . -B $(RELEASE_DIR) -DCMAKE_BUILD_TYPE=Release
+	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS)
+	cd $(RELEASE_DIR) && ctest --output-on-failure -j $(JOBS)
+
+test-sanitize: deps
+	$(CMAKE) -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANIMKIT_SANITIZE=ON \
+	  -DANIMKIT_BUILD_BENCHMARKS=OFF
+	$(CMAKE) --build $(SANITIZE_DIR) -j $(JOBS)
+	cd $(SANITIZE_DIR) && ctest --output-on-failure -j $(JOBS)
+
+test: test-release test-sanitize
+
+bench: build
+	$(RELEASE_DIR)/bench/ik_bench
+
+format:
+	clang-format -i $$(git ls-files '*.h' '*.cpp')
+
+clean:
+	rm -rf build out

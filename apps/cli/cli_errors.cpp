@@ -1,0 +1,35 @@
+#include "cli_errors.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace animkit::cli {
+
+int report_error(std::string_view message) {
+  std::fprintf(stderr, "animkit: error: %.*s\n", static_cast<int>(message.size()),
+               message.data());
+  return kExitBadInput;
+}
+
+bool parse_vec3(std::string_view text, Vec3& out) {
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::size_t comma = text.find(',');
+    const bool last = axis == 2;
+    if (last != (comma == std::string_view::npos)) return false;
+    const std::string_view part = last ? text : text.substr(0, comma);
+    // strtod rather than from_chars: it accepts "1e-3", "+2" and leading spaces users type.
+    const std::string owned(part);
+    char* end = nullptr;
+    const double value = std::strtod(owned.c_str(), &end);
+    if (owned.empty() || end != owned.c_str() + owned.size() || !std::isfinite(value)) {
+      return false;
+    }
+    out[axis] = value;
+    if (!last) text.remove_prefix(comma + 1);
+  }
+  return true;
+}
+
+}  // namespace animkit::cli

@@ -1,0 +1,119 @@
+#include "ik_command.h"
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "animkit/core/validation.h"
+#include "animkit/io/ik_report.h"
+#include "animkit/kinematics/chain.h"
+#include "animkit/kinematics/drawing_session.h"
+#include "animkit/trajectory/lab_shapes.h"
+#include "cli_errors.h"
+#include "ik_table.h"
+
+namespace animkit::cli {
+
+namespace {
+
+struct IkArgs {
+  std::string shape = "circle";
+  std::string solver = "ccd";
+  int max_iterations = IkOptions{}.max_iterations;
+  double tolerance = IkOptions{}.tolerance;
+  int laps = 1;
+  bool cold_start = false;
+  std::string target;
+  std::string out;
+};
+
+std::string shape_names() {
+  std::string names;
+  for (LabShape s : all_lab_shapes()) names += (names.empty() ? "" : ", ") + std::string(to_string(s));
+  return names;
+}
+
+int solve_one_target(const Chain& chain, IkSolverKind solver, const IkOptions& options,
+                     const std::string& text) {
+  Vec3 target;
+  if (!parse_vec3(text, target)) {
+    return report_error("--target must be three finite numbers X,Y,Z, got '" + text + "'");
+  }
+  Pose pose = rest_pose(chain);
+  const auto result = solve_ik(solver, chain, pose, target, options);
+  if (!result) return report_error(result.error().message);
+  std::printf("solver       %s\n", std::string(to_string(solver)).c_str());
+  std::printf("target       %s\n", to_string(target).c_str());
+  std::printf("end effector %s\n", to_string(pose.end_effector()).c_str());
+  std::printf("iterations   %d\n", result->iterations);
+  std::printf("error        %.3e\n", result->error);
+  std::printf("converged    %s\n", result->converged ? "yes" : "no");
+  std::printf("reachable    %s%s\n", result->reachable ? "yes" : "no",
+              result->reachable ? "" : " (the arm points straight at the target)");
+  for (int i = 0; i < chain.joint_count(); ++i) {
+    std::printf("joint %d      %s\n", i, to_string(pose.global_positions[i]).c_str());
+  }
+  return 0;
+}
+
+int run(const IkArgs& args) {
+  const auto shape = parse_lab_shape(args.shape);
+  if (!shape) {
+    return report_error("unknown shape '" + args.shape + "' (expected one of: " + shape_names() +
+                        ")");
+  }
+  const auto solver = parse_ik_solver(args.solver);
+  if (!solver) return report_error("unknown solver '" + args.solver + "' (expected ccd or fabrik)");
+
+  DrawingOptions options;
+  options.solver = *solver;
+  options.ik.max_iterations = args.max_iterations;
+  options.ik.tolerance = args.tolerance;
+  options.laps = args.laps;
+  options.warm_start = !args.cold_start;
+  if (auto error = options.validate()) return report_error(error->message);
+
+  const auto chain = build_chain(lab_arm());
+  if (!chain) return report_error(chain.error().message);
+  if (!args.target.empty()) return solve_one_target(*chain, *solver, options.ik, args.target);
+
+  const auto run = run_drawing(*chain, lab_shape_targets(*shape), options);
+  if (!run) return report_error(run.error().message);
+  const IkRunLabel label{args.shape, args.solver};
+  if (!args.out.empty()) {
+    if (auto written = write_ik_reports(args.out, label, options, *run); !written) {
+      return report_error(written.error().message);
+    }
+  }
+  print_ik_table_header();
+  print_ik_table_row(label.shape, label.solver, summarize(*run));
+  if (!args.out.empty()) std::printf("wrote metrics.json, path.csv, drawing.svg to %s\n", args.out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> add_ik_command(CLI::App& app) {
+  auto args = std::make_shared<IkArgs>();
+  CLI::App* ik = app.add_subcommand(
+      "ik", "The lab's arm draws a shape with inverse kinematics, one target per frame "
+            "(warm-started from the previous frame), and reports what each solve did.");
+  ik->add_option("--shape", args->shape, "Shape to draw: " + shape_names())->capture_default_str();
+  ik->add_option("--solver", args->solver, "IK solver: ccd or fabrik")->capture_default_str();
+  ik->add_option("--max-iterations", args->max_iterations, "Iteration cap per target (>= 1)")
+      ->capture_default_str();
+  ik->add_option("--tolerance", args->tolerance,
+                 "Converged when |end effector - target| <= tolerance (> 0)")
+      ->capture_default_str();
+  ik->add_option("--laps", args->laps, "Times the shape is drawn; the arm resets to rest each lap")
+      ->capture_default_str();
+  ik->add_flag("--cold-start", args->cold_start,
+               "Solve every target from the rest pose instead of the previous frame's pose");
+  ik->add_option("--target", args->target,
+                 "Solve one target X,Y,Z from the rest pose, print the result and exit");
+  ik->add_option("--out", args->out,
+                 "Folder for metrics.json, path.csv and drawing.svg (created if needed)");
+  return [args] { return run(*args); };
+}
+
+}  // namespace animkit::cli

@@ -1,0 +1,16 @@
+#pragma once
+// Quaternion helpers that stay accurate where the textbook formulas lose precision.
+#include "animkit/core/types.h"
+
+namespace animkit {
+
+/// The shortest-arc rotation taking the direction of `from` onto the direction of `to`.
+/// Neither vector needs to be normalized; both must be non-zero. Accurate for tiny angles
+/// (no "close enough to identity" cut-off, unlike glm::rotation, whose float epsilon makes
+/// CCD stall), and for opposite vectors it turns by pi about an axis perpendicular to `from`.
+Quat shortest_arc(const Vec3& from, const Vec3& to);
+
+/// Angle in radians, in [0, pi], of the rotation that takes `a` to `b` (sign of q ignored).
+double rotation_angle_between(const Quat& a, const Quat& b);
+
+}  // namespace animkit

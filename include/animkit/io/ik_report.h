@@ -1,0 +1,35 @@
+#pragma once
+// The files `animkit ik --out DIR` writes, rendered to text from a drawing run:
+// metrics.json (names are a contract), path.csv (one row per frame), drawing.svg (top view).
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "animkit/kinematics/drawing_session.h"
+
+namespace animkit {
+
+/// What the run was: names printed into the reports.
+struct IkRunLabel {
+  std::string shape;   ///< e.g. "star"
+  std::string solver;  ///< e.g. "ccd"
+};
+
+/// metrics.json: {"solver", "shape", "targets", "converged_fraction", "unreachable_targets",
+/// "iterations": {"mean","median","max"}, "error": {"mean","max"}, "max_joint_step_rad",
+/// "solve_time_us": {"median","mean"}, plus the options used.
+std::string ik_metrics_json(const IkRunLabel& label, const DrawingOptions& options,
+                            const DrawingSummary& summary);
+
+/// path.csv: frame, target x,y,z, end effector x,y,z, iterations, error, converged, reachable.
+std::string ik_path_csv(const DrawingRun& run);
+
+/// drawing.svg: the plane y = 0 seen from above (x to the right, z down), targets in green,
+/// the drawn end-effector path in red, titled with shape and solver.
+std::string ik_drawing_svg(const IkRunLabel& label, const DrawingRun& run);
+
+/// Writes the three files into `dir` (created if needed), each atomically.
+Result<void> write_ik_reports(const std::filesystem::path& dir, const IkRunLabel& label,
+                              const DrawingOptions& options, const DrawingRun& run);
+
+}  // namespace animkit

@@ -1,0 +1,61 @@
+#pragma once
+// A drawing session: the arm follows a list of targets, one IK solve per frame, as the lab's
+// app does. Records what each frame did so the lab's questions can be answered by measurement.
+#include <span>
+#include <vector>
+
+#include "animkit/kinematics/ik_solver.h"
+
+namespace animkit {
+
+struct DrawingOptions {
+  IkSolverKind solver = IkSolverKind::ccd;  ///< the lab's first solver
+  IkOptions ik;                             ///< lab defaults: 100 iterations, eps 1e-4
+  int laps = 1;                             ///< times the whole target list is drawn; >= 1
+  /// true (the lab): each frame starts from the previous frame's pose, and the pose is reset
+  /// to rest when a lap starts. false: every frame starts from the rest pose (cold start).
+  bool warm_start = true;
+
+  std::optional<Error> validate() const;
+};
+
+/// One frame: one target, one solve.
+struct DrawingFrame {
+  int lap = 0;
+  Vec3 target = Vec3::Zero();
+  Vec3 end_effector = Vec3::Zero();   ///< after the solve (world)
+  IkResult ik;
+  /// Largest change of any joint's local rotation since the previous frame of the same lap
+  /// (radians; 0 on a lap's first frame): the frame-to-frame jitter of the lab's question 3.
+  double joint_step_rad = 0.0;
+  double solve_time_us = 0.0;         ///< wall-clock time of the solve (microseconds)
+  std::vector<Vec3> joint_positions;  ///< pose after the solve, for drawing the arm (world)
+};
+
+struct DrawingRun {
+  std::vector<DrawingFrame> frames;  ///< laps * targets frames, in order
+  Pose final_pose;
+};
+
+/// Runs the session. Errors: empty target list, a NaN/inf target (naming its index), bad options.
+Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets,
+                               const DrawingOptions& options = {});
+
+/// Aggregate numbers of a run (the metrics the CLI writes and the README quotes).
+struct DrawingSummary {
+  int targets = 0;                  ///< frames solved
+  double converged_fraction = 0.0;  ///< frames with error <= tolerance, in [0, 1]
+  int unreachable_targets = 0;      ///< frames whose target no pose reaches
+  double iterations_mean = 0.0;
+  double iterations_median = 0.0;
+  int iterations_max = 0;
+  double error_mean = 0.0;
+  double error_max = 0.0;
+  double max_joint_step_rad = 0.0;
+  double solve_time_us_median = 0.0;
+  double solve_time_us_mean = 0.0;
+};
+
+DrawingSummary summarize(const DrawingRun& run);
+
+}  // namespace animkit

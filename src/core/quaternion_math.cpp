@@ -1,0 +1,36 @@
+#include "animkit/core/quaternion_math.h"
+
+#include <cmath>
+
+namespace animkit {
+
+Quat shortest_arc(const Vec3& from, const Vec3& to) {
+  // For unit a, b the half-way quaternion is normalize(1 + a.b, a x b). Scaling by |from||to|
+  // gives normalize(|from||to| + from.to, from x to): one square root fewer and no
+  // normalization of the inputs. For small angles the vector part stays exact, so the rotation
+  // never collapses to identity before the directions really agree.
+  const double norms = std::sqrt(from.squaredNorm() * to.squaredNorm());
+  const double w = norms + from.dot(to);
+  if (w <= 1e-12 * norms) {
+    // Opposite directions: rotate by pi about any axis perpendicular to `from`; pick the
+    // one built from the coordinate axis least aligned with `from`, so it is well conditioned.
+    const Vec3 a = from.cwiseAbs();
+    const Vec3 helper = (a.x() <= a.y() && a.x() <= a.z()) ? Vec3::UnitX()
+                        : (a.y() <= a.z())                 ? Vec3::UnitY()
+                                                           : Vec3::UnitZ();
+    const Vec3 axis = from.cross(helper).normalized();
+    return Quat(0.0, axis.x(), axis.y(), axis.z());
+  }
+  const Vec3 v = from.cross(to);
+  Quat q(w, v.x(), v.y(), v.z());
+  q.normalize();
+  return q;
+}
+
+double rotation_angle_between(const Quat& a, const Quat& b) {
+  const Quat d = a.conjugate() * b;
+  // atan2 form: accurate for small and large angles alike, no acos domain issues.
+  return 2.0 * std::atan2(d.vec().norm(), std::abs(d.w()));
+}
+
+}  // namespace animkit

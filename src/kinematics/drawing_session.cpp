@@ -1,0 +1,109 @@
+#include "animkit/kinematics/drawing_session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+#include "animkit/core/quaternion_math.h"
+#include "animkit/core/validation.h"
+
+namespace animkit {
+
+namespace {
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const std::size_t mid = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid), values.end());
+  const double upper = values[mid];
+  if (values.size() % 2 == 1) return upper;
+  const double lower = *std::max_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(mid));
+  return 0.5 * (lower + upper);
+}
+
+double largest_rotation_change(const Pose& before, const Pose& after) {
+  double largest = 0.0;
+  for (std::size_t j = 0; j < before.local_rotations.size(); ++j) {
+    largest = std::max(largest,
+                       rotation_angle_between(before.local_rotations[j], after.local_rotations[j]));
+  }
+  return largest;
+}
+
+}  // namespace
+
+std::optional<Error> DrawingOptions::validate() const {
+  if (laps < 1) return Error{"laps must be at least 1, got " + std::to_string(laps)};
+  return ik.validate();
+}
+
+Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets,
+                               const DrawingOptions& options) {
+  if (auto error = options.validate()) return fail(error->message);
+  if (targets.empty()) return fail("the trajectory has no targets");
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    if (!is_finite(targets[i])) {
+      return fail("target " + std::to_string(i) + " has a non-finite coordinate " +
+                  to_string(targets[i]));
+    }
+  }
+
+  const Pose rest = rest_pose(chain);
+  DrawingRun run;
+  run.frames.reserve(targets.size() * static_cast<std::size_t>(options.laps));
+  Pose pose = rest;
+  Pose previous = rest;
+  for (int lap = 0; lap < options.laps; ++lap) {
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      // The lab resets the arm to rest when a shape starts over; cold start does so every frame.
+      if (t == 0 || !options.warm_start) pose = rest;
+      const auto start = std::chrono::steady_clock::now();
+      auto solved = solve_ik(options.solver, chain, pose, targets[t], options.ik);
+      const auto stop = std::chrono::steady_clock::now();
+      if (!solved) return fail(solved.error().message);
+
+      DrawingFrame frame;
+      frame.lap = lap;
+      frame.target = targets[t];
+      frame.end_effector = pose.end_effector();
+      frame.ik = *solved;
+      frame.joint_step_rad = t == 0 ? 0.0 : largest_rotation_change(previous, pose);
+      frame.solve_time_us = std::chrono::duration<double, std::micro>(stop - start).count();
+      frame.joint_positions = pose.global_positions;
+      run.frames.push_back(std::move(frame));
+      previous = pose;
+    }
+  }
+  run.final_pose = pose;
+  return run;
+}
+
+DrawingSummary summarize(const DrawingRun& run) {
+  DrawingSummary s;
+  s.targets = static_cast<int>(run.frames.size());
+  if (run.frames.empty()) return s;
+  std::vector<double> iterations, times;
+  int converged = 0;
+  for (const DrawingFrame& f : run.frames) {
+    converged += f.ik.converged ? 1 : 0;
+    s.unreachable_targets += f.ik.reachable ? 0 : 1;
+    iterations.push_back(f.ik.iterations);
+    times.push_back(f.solve_time_us);
+    s.iterations_mean += f.ik.iterations;
+    s.iterations_max = std::max(s.iterations_max, f.ik.iterations);
+    s.error_mean += f.ik.error;
+    s.error_max = std::max(s.error_max, f.ik.error);
+    s.max_joint_step_rad = std::max(s.max_joint_step_rad, f.joint_step_rad);
+    s.solve_time_us_mean += f.solve_time_us;
+  }
+  const double n = static_cast<double>(run.frames.size());
+  s.converged_fraction = converged / n;
+  s.iterations_mean /= n;
+  s.error_mean /= n;
+  s.solve_time_us_mean /= n;
+  s.iterations_median = median(std::move(iterations));
+  s.solve_time_us_median = median(std::move(times));
+  return s;
+}
+
+}  // namespace animkit

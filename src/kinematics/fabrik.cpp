@@ -1,0 +1,76 @@
+#include "animkit/kinematics/fabrik.h"
+
+#include "animkit/core/quaternion_math.h"
+#include "animkit/kinematics/forward_kinematics.h"
+#include "ik_common.h"
+
+namespace animkit {
+
+namespace {
+
+// Moves `joint` onto the sphere of radius `length` around `anchor`, along the line joining
+// them (the "reaching" step of FABRIK). If they coincide, `fallback` gives the direction.
+void reach_toward(const Vec3& anchor, Vec3& joint, double length, const Vec3& fallback) {
+  const Vec3 d = joint - anchor;
+  const double norm = d.norm();
+  joint = norm > 0.0 ? Vec3(anchor + d * (length / norm))
+                     : Vec3(anchor + fallback.normalized() * length);
+}
+
+// FABRIK, Aristidou & Lasenby 2011, Alg. 1 (reachable branch), in place on the positions:
+// the backward pass pins the end joint on the target and walks to the root; the forward pass
+// pins the root back and walks out again. Each pass keeps every bone at its length.
+void backward_forward_pass(const Chain& chain, Pose& pose, const Vec3& target) {
+  auto& p = pose.global_positions;
+  const int end = chain.joint_count() - 1;
+  p[end] = target;
+  for (int i = end - 1; i >= 0; --i) {
+    reach_toward(p[i + 1], p[i], chain.bone_lengths[i + 1],
+                 -(pose.global_rotations[i] * chain.local_offsets[i + 1]));
+  }
+  p[0] = chain.root_position();
+  for (int i = 0; i < end; ++i) {
+    reach_toward(p[i], p[i + 1], chain.bone_lengths[i + 1],
+                 pose.global_rotations[i] * chain.local_offsets[i + 1]);
+  }
+}
+
+// Rotations from positions: joint i's global rotation is the shortest arc from its rest bone
+// offset to its new bone; local = parent^-1 * global. The end joint keeps its local rotation.
+void recover_rotations(const Chain& chain, Pose& pose) {
+  const auto& p = pose.global_positions;
+  Quat parent = Quat::Identity();
+  for (int i = 0; i + 1 < chain.joint_count(); ++i) {
+    const Quat global = shortest_arc(chain.local_offsets[i + 1], p[i + 1] - p[i]);
+    pose.local_rotations[i] = (parent.conjugate() * global).normalized();
+    parent = global;
+  }
+  forward_kinematics(chain, pose, 0);
+}
+
+}  // namespace
+
+Result<IkResult> solve_fabrik(const Chain& chain, Pose& pose, const Vec3& target,
+                              const IkOptions& options) {
+  if (auto error = detail::validate_ik_input(chain, pose, target, options)) {
+    return fail(error->message);
+  }
+  const double distance = (target - chain.root_position()).norm();
+  if (distance > chain.reach) return detail::point_chain_at(chain, pose, target, options);
+
+  forward_kinematics(chain, pose, 0);
+  IkResult result;
+  result.reachable = distance >= chain.min_reach;
+  double error = (pose.end_effector() - target).norm();
+  while (error > options.tolerance && result.iterations < options.max_iterations) {
+    backward_forward_pass(chain, pose, target);
+    ++result.iterations;
+    error = (pose.end_effector() - target).norm();
+  }
+  if (result.iterations > 0) recover_rotations(chain, pose);
+  result.error = (pose.end_effector() - target).norm();
+  result.converged = result.error <= options.tolerance;
+  return result;
+}
+
+}  // namespace animkit

@@ -1,0 +1,93 @@
+#include "animkit/kinematics/ik_solver.h"
+
+#include <array>
+#include <string>
+
+#include "animkit/core/quaternion_math.h"
+#include "animkit/core/validation.h"
+#include "animkit/kinematics/forward_kinematics.h"
+#include "ik_common.h"
+
+namespace animkit {
+
+std::optional<Error> IkOptions::validate() const {
+  if (max_iterations < 1) {
+    return Error{"max iterations must be at least 1, got " + std::to_string(max_iterations)};
+  }
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
+    return Error{"tolerance must be a positive finite number, got " + std::to_string(tolerance)};
+  }
+  return std::nullopt;
+}
+
+std::string_view to_string(IkSolverKind kind) {
+  switch (kind) {
+    case IkSolverKind::ccd:
+      return "ccd";
+    case IkSolverKind::fabrik:
+      return "fabrik";
+  }
+  return "unknown";
+}
+
+std::span<const IkSolverKind> all_ik_solvers() {
+  static constexpr std::array kinds{IkSolverKind::ccd, IkSolverKind::fabrik};
+  return kinds;
+}
+
+std::optional<IkSolverKind> parse_ik_solver(std::string_view name) {
+  for (IkSolverKind kind : all_ik_solvers()) {
+    if (name == to_string(kind)) return kind;
+  }
+  return std::nullopt;
+}
+
+Result<IkResult> solve_ik(IkSolverKind kind, const Chain& chain, Pose& pose, const Vec3& target,
+                          const IkOptions& options) {
+  return kind == IkSolverKind::ccd ? solve_ccd(chain, pose, target, options)
+                                   : solve_fabrik(chain, pose, target, options);
+}
+
+namespace detail {
+
+std::optional<Error> validate_ik_input(const Chain& chain, const Pose& pose, const Vec3& target,
+                                       const IkOptions& options) {
+  if (!is_finite(target)) {
+    return Error{"target has a non-finite coordinate " + to_string(target)};
+  }
+  const std::size_t n = chain.local_offsets.size();
+  if (pose.local_rotations.size() != n || pose.global_rotations.size() != n ||
+      pose.global_positions.size() != n) {
+    return Error{"pose has " + std::to_string(pose.local_rotations.size()) +
+                 " joints but the chain has " + std::to_string(n)};
+  }
+  return options.validate();
+}
+
+bool within_reach(const Chain& chain, const Vec3& target) {
+  const double distance = (target - chain.root_position()).norm();
+  return distance <= chain.reach && distance >= chain.min_reach;
+}
+
+IkResult point_chain_at(const Chain& chain, Pose& pose, const Vec3& target,
+                        const IkOptions& options) {
+  const int n = chain.joint_count();
+  Vec3 direction = target - chain.root_position();
+  if (direction.squaredNorm() == 0.0) direction = pose.end_effector() - chain.root_position();
+  // Every bone along `direction`: global_rotation[i] maps bone i+1's rest offset onto it.
+  Quat parent = Quat::Identity();
+  for (int i = 0; i + 1 < n; ++i) {
+    const Quat global = shortest_arc(chain.local_offsets[i + 1], direction);
+    pose.local_rotations[i] = (parent.conjugate() * global).normalized();
+    parent = global;
+  }
+  forward_kinematics(chain, pose, 0);
+  IkResult result;
+  result.error = (pose.end_effector() - target).norm();
+  result.converged = result.error <= options.tolerance;
+  result.reachable = within_reach(chain, target);
+  return result;
+}
+
+}  // namespace detail
+}  // namespace animkit
