@@ -12,19 +12,22 @@ Quat shortest_arc(const Vec3& from, const Vec3& to) {
   const double norms = std::sqrt(from.squaredNorm() * to.squaredNorm());
   const double w = norms + from.dot(to);
   if (w <= 1e-12 * norms) {
-    // Opposite directions: rotate by pi about any axis perpendicular to `from`; pick the
-    // one built from the coordinate axis least aligned with `from`, so it is well conditioned.
-    const Vec3 a = from.cwiseAbs();
-    const Vec3 helper = (a.x() <= a.y() && a.x() <= a.z()) ? Vec3::UnitX()
-                        : (a.y() <= a.z())                 ? Vec3::UnitY()
-                                                           : Vec3::UnitZ();
-    const Vec3 axis = from.cross(helper).normalized();
+    // Opposite directions: rotate by pi about an axis perpendicular to `from`.
+    const Vec3 axis = perpendicular_axis(from);
     return Quat(0.0, axis.x(), axis.y(), axis.z());
   }
   const Vec3 v = from.cross(to);
   Quat q(w, v.x(), v.y(), v.z());
   q.normalize();
   return q;
+}
+
+Vec3 perpendicular_axis(const Vec3& v) {
+  const Vec3 a = v.cwiseAbs();
+  const Vec3 helper = (a.x() <= a.y() && a.x() <= a.z()) ? Vec3::UnitX()
+                      : (a.y() <= a.z())                 ? Vec3::UnitY()
+                                                         : Vec3::UnitZ();
+  return v.cross(helper).normalized();
 }
 
 double rotation_angle_between(const Quat& a, const Quat& b) {

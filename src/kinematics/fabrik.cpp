@@ -58,14 +58,25 @@ Result<IkResult> solve_fabrik(const Chain& chain, Pose& pose, const Vec3& target
   const double distance = (target - chain.root_position()).norm();
   if (distance > chain.reach) return detail::point_chain_at(chain, pose, target, options);
 
-  forward_kinematics(chain, pose, 0);
   IkResult result;
   result.reachable = distance >= chain.min_reach;
-  double error = (pose.end_effector() - target).norm();
-  while (error > options.tolerance && result.iterations < options.max_iterations) {
+  // Squared distances in the loop: a square root less on each pass's critical path.
+  const double tolerance2 = options.tolerance * options.tolerance;
+  constexpr double kStall2 = (1.0 - detail::kStallRatio) * (1.0 - detail::kStallRatio);
+  double error2 = (pose.end_effector() - target).squaredNorm();
+  while (error2 > tolerance2 && result.iterations < options.max_iterations) {
     backward_forward_pass(chain, pose, target);
     ++result.iterations;
-    error = (pose.end_effector() - target).norm();
+    const double previous_error2 = error2;
+    error2 = (pose.end_effector() - target).squaredNorm();
+    if (error2 > tolerance2 && error2 >= previous_error2 * kStall2) {
+      // Singular pose (see kStallRatio): swing the chain about the root off the line, so the
+      // next backward pass bends it, and go on.
+      auto& p = pose.global_positions;
+      const Quat kick = detail::stall_kick(chain, pose, target);
+      for (std::size_t k = 1; k < p.size(); ++k) p[k] = p[0] + kick * (p[k] - p[0]);
+      error2 = (pose.end_effector() - target).squaredNorm();
+    }
   }
   if (result.iterations > 0) recover_rotations(chain, pose);
   result.error = (pose.end_effector() - target).norm();

@@ -17,6 +17,17 @@ std::optional<Error> validate_ik_input(const Chain& chain, const Pose& pose, con
 IkResult point_chain_at(const Chain& chain, Pose& pose, const Vec3& target,
                         const IkOptions& options);
 
+/// An iteration that shrinks the error by less than this fraction has stalled. Both solvers
+/// stall only in singular poses: the chain lies on the line through the target with every
+/// joint direction already parallel (e.g. the lab's triangle starts at (0,0,0), straight
+/// below the root of the hanging arm, so CCD finds no joint to turn and FABRIK slides along
+/// the line).
+constexpr double kStallRatio = 1e-6;
+
+/// The small world rotation (0.2 rad about an axis perpendicular to root -> target) that
+/// bends a stalled chain out of its singular line, after which the solver makes progress.
+Quat stall_kick(const Chain& chain, const Pose& pose, const Vec3& target);
+
 /// True when some pose puts the end effector on the target.
 bool within_reach(const Chain& chain, const Vec3& target);
 

@@ -69,6 +69,13 @@ bool within_reach(const Chain& chain, const Vec3& target) {
   return distance <= chain.reach && distance >= chain.min_reach;
 }
 
+Quat stall_kick(const Chain& chain, const Pose& pose, const Vec3& target) {
+  constexpr double kKickAngle = 0.2;
+  Vec3 line = target - chain.root_position();
+  if (line.squaredNorm() == 0.0) line = pose.end_effector() - chain.root_position();
+  return Quat(Eigen::AngleAxisd(kKickAngle, perpendicular_axis(line)));
+}
+
 IkResult point_chain_at(const Chain& chain, Pose& pose, const Vec3& target,
                         const IkOptions& options) {
   const int n = chain.joint_count();

@@ -10,6 +10,10 @@ namespace animkit {
 /// CCD stall), and for opposite vectors it turns by pi about an axis perpendicular to `from`.
 Quat shortest_arc(const Vec3& from, const Vec3& to);
 
+/// A unit vector perpendicular to the non-zero `v`, chosen deterministically (crossed with the
+/// coordinate axis least aligned with `v`, so the result is well conditioned).
+Vec3 perpendicular_axis(const Vec3& v);
+
 /// Angle in radians, in [0, pi], of the rotation that takes `a` to `b` (sign of q ignored).
 double rotation_angle_between(const Quat& a, const Quat& b);
 

@@ -8,7 +8,9 @@ namespace animkit {
 /// Cyclic coordinate descent (SPEC.md section 2). One iteration visits the joints from the one
 /// nearest the end effector back to the root; each turns by the shortest arc taking
 /// (joint -> end effector) onto (joint -> target), and forward kinematics is re-run from it.
-/// Starts from `pose` (warm start) and leaves the solution in it. Targets beyond the chain's
+/// Starts from `pose` (warm start) and leaves the solution in it. The pose must be up to date,
+/// i.e. as rest_pose(), forward_kinematics() or any solver leaves it (solvers do not re-run
+/// FK first: it would cost a fifth of a warm-started FABRIK solve). Targets beyond the chain's
 /// reach straighten the chain toward the target and report reachable = false.
 /// Errors: NaN/inf target, a pose that does not fit the chain, invalid options.
 Result<IkResult> solve_ccd(const Chain& chain, Pose& pose, const Vec3& target,
