@@ -24,7 +24,9 @@ void backward_forward_pass(const Chain& chain, Pose& pose, const Vec3& target) {
   auto& p = pose.global_positions;
   const int end = chain.joint_count() - 1;
   p[end] = target;
-  for (int i = end - 1; i >= 0; --i) {
+  // The backward pass stops at joint 1: joint 0 would be moved only to be put back on the
+  // root by the forward pass, which reads nothing of it.
+  for (int i = end - 1; i >= 1; --i) {
     reach_toward(p[i + 1], p[i], chain.bone_lengths[i + 1],
                  -(pose.global_rotations[i] * chain.local_offsets[i + 1]));
   }
@@ -42,7 +44,8 @@ void recover_rotations(const Chain& chain, Pose& pose) {
   Quat parent = Quat::Identity();
   for (int i = 0; i + 1 < chain.joint_count(); ++i) {
     const Quat global = shortest_arc(chain.local_offsets[i + 1], p[i + 1] - p[i]);
-    pose.local_rotations[i] = (parent.conjugate() * global).normalized();
+    // A product of unit quaternions, rebuilt from fresh arcs at every solve: no drift to undo.
+    pose.local_rotations[i] = parent.conjugate() * global;
     parent = global;
   }
   forward_kinematics(chain, pose, 0);
@@ -52,14 +55,12 @@ void recover_rotations(const Chain& chain, Pose& pose) {
 
 Result<IkResult> solve_fabrik(const Chain& chain, Pose& pose, const Vec3& target,
                               const IkOptions& options) {
-  if (auto error = detail::validate_ik_input(chain, pose, target, options)) {
-    return fail(error->message);
+  if (auto settled = detail::settle_without_iterating(chain, pose, target, options)) {
+    return *settled;
   }
-  const double distance = (target - chain.root_position()).norm();
-  if (distance > chain.reach) return detail::point_chain_at(chain, pose, target, options);
 
   IkResult result;
-  result.reachable = distance >= chain.min_reach;
+  result.reachable = detail::within_reach(chain, target);
   // Squared distances in the loop: a square root less on each pass's critical path.
   const double tolerance2 = options.tolerance * options.tolerance;
   constexpr double kStall2 = (1.0 - detail::kStallRatio) * (1.0 - detail::kStallRatio);

@@ -7,9 +7,12 @@
 
 namespace animkit::detail {
 
-/// The first problem with a solve's inputs, or nothing.
-std::optional<Error> validate_ik_input(const Chain& chain, const Pose& pose, const Vec3& target,
-                                       const IkOptions& options);
+/// The part of a solve every solver shares, run before iterating: the result when the solve
+/// ends here (invalid input, or a target beyond reach, answered with the straight chain), or
+/// nothing when the solver should iterate.
+std::optional<Result<IkResult>> settle_without_iterating(const Chain& chain, Pose& pose,
+                                                         const Vec3& target,
+                                                         const IkOptions& options);
 
 /// Points every bone straight from the root toward `target`: for a target beyond reach this is
 /// the pose that brings the end effector nearest (at full reach on the ray root -> target).

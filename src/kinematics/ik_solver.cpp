@@ -14,7 +14,8 @@ std::optional<Error> IkOptions::validate() const {
   if (max_iterations < 1) {
     return Error{"max iterations must be at least 1, got " + std::to_string(max_iterations)};
   }
-  if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
+  // isfinite first: an ordered comparison with NaN raises FE_INVALID, which the tests trap.
+  if (!std::isfinite(tolerance) || tolerance <= 0.0) {
     return Error{"tolerance must be a positive finite number, got " + std::to_string(tolerance)};
   }
   return std::nullopt;
@@ -50,23 +51,39 @@ Result<IkResult> solve_ik(IkSolverKind kind, const Chain& chain, Pose& pose, con
 
 namespace detail {
 
+namespace {
+
 std::optional<Error> validate_ik_input(const Chain& chain, const Pose& pose, const Vec3& target,
                                        const IkOptions& options) {
   if (!is_finite(target)) {
     return Error{"target has a non-finite coordinate " + to_string(target)};
   }
   const std::size_t n = chain.local_offsets.size();
-  if (pose.local_rotations.size() != n || pose.global_rotations.size() != n ||
-      pose.global_positions.size() != n) {
-    return Error{"pose has " + std::to_string(pose.local_rotations.size()) +
-                 " joints but the chain has " + std::to_string(n)};
-  }
+  const auto mismatch = [n](std::size_t size, const char* what) {
+    return Error{"pose has " + std::to_string(size) + " " + what + " but the chain has " +
+                 std::to_string(n) + " joints"};
+  };
+  if (pose.local_rotations.size() != n) return mismatch(pose.local_rotations.size(), "local rotations");
+  if (pose.global_rotations.size() != n) return mismatch(pose.global_rotations.size(), "global rotations");
+  if (pose.global_positions.size() != n) return mismatch(pose.global_positions.size(), "joint positions");
   return options.validate();
 }
 
+}  // namespace
+
+std::optional<Result<IkResult>> settle_without_iterating(const Chain& chain, Pose& pose,
+                                                         const Vec3& target,
+                                                         const IkOptions& options) {
+  if (auto error = validate_ik_input(chain, pose, target, options)) return fail(error->message);
+  if ((target - chain.root_position()).squaredNorm() > chain.reach * chain.reach) {
+    return point_chain_at(chain, pose, target, options);
+  }
+  return std::nullopt;
+}
+
 bool within_reach(const Chain& chain, const Vec3& target) {
-  const double distance = (target - chain.root_position()).norm();
-  return distance <= chain.reach && distance >= chain.min_reach;
+  const double distance2 = (target - chain.root_position()).squaredNorm();
+  return distance2 <= chain.reach * chain.reach && distance2 >= chain.min_reach * chain.min_reach;
 }
 
 Quat stall_kick(const Chain& chain, const Pose& pose, const Vec3& target) {

@@ -1,0 +1,148 @@
+// Behaviour tests of `animkit ik` and `animkit demo`: the real binary, its output and files.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "../support/run_command.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using animkit::testing_support::run_command;
+
+const std::string kCli = ANIMKIT_CLI_PATH;
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::path(testing::TempDir()) / ("cli_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int count_lines(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+TEST(IkCli, WritesMetricsPathAndDrawing) {
+  const fs::path out = fresh_dir("star_fabrik");
+  const auto r = run_command(kCli + " ik --shape star --solver fabrik --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("star"), std::string::npos);
+  const auto metrics = nlohmann::json::parse(read(out / "metrics.json"));
+  EXPECT_EQ(metrics["solver"], "fabrik");
+  EXPECT_EQ(metrics["shape"], "star");
+  EXPECT_EQ(metrics["targets"], 400);
+  EXPECT_EQ(metrics["converged_fraction"], 1.0);
+  EXPECT_EQ(metrics["unreachable_targets"], 0);
+  for (const char* key : {"iterations", "error", "max_joint_step_rad", "solve_time_us"}) {
+    EXPECT_TRUE(metrics.contains(key)) << key;
+  }
+  EXPECT_EQ(count_lines(read(out / "path.csv")), 401);  // header + one row per frame
+  const std::string svg = read(out / "drawing.svg");
+  EXPECT_NE(svg.find("star"), std::string::npos);
+  EXPECT_NE(svg.find("fabrik"), std::string::npos);
+}
+
+TEST(IkCli, LapsMultiplyTheFrames) {
+  const fs::path out = fresh_dir("laps");
+  const auto r = run_command(kCli + " ik --shape square --laps 2 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(read(out / "metrics.json"))["targets"], 300);
+}
+
+TEST(IkCli, SingleTargetPrintsTheResult) {
+  const auto r = run_command(kCli + " ik --solver ccd --target 0.5,0,0.3");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("converged    yes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("reachable    yes"), std::string::npos);
+}
+
+TEST(IkCli, UnreachableTargetIsReported) {
+  const auto r = run_command(kCli + " ik --solver fabrik --target 3,0,0");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("reachable    no"), std::string::npos) << r.out;
+}
+
+struct BadInvocation {
+  std::string args;
+  std::string message;  // expected start of the stderr line after "animkit: error: "
+};
+
+void PrintTo(const BadInvocation& b, std::ostream* os) { *os << "animkit " << b.args; }
+
+class IkCliBadInput : public testing::TestWithParam<BadInvocation> {};
+
+TEST_P(IkCliBadInput, OneLineOnStderrAndExitCode2) {
+  const auto r = run_command(kCli + " " + GetParam().args);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("animkit: error: " + GetParam().message, 0), 0u) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, IkCliBadInput,
+    testing::Values(
+        BadInvocation{"ik --shape hexagon", "unknown shape 'hexagon'"},
+        BadInvocation{"ik --solver jacobian", "unknown solver 'jacobian'"},
+        BadInvocation{"ik --tolerance 0", "tolerance must be a positive finite number"},
+        BadInvocation{"ik --tolerance -1", "tolerance must be a positive finite number"},
+        BadInvocation{"ik --tolerance abc", "Could not convert"},
+        BadInvocation{"ik --max-iterations 0", "max iterations must be at least 1"},
+        BadInvocation{"ik --laps 0", "laps must be at least 1"},
+        BadInvocation{"ik --target 1,2", "--target must be three finite numbers"},
+        BadInvocation{"ik --target nan,0,0", "--target must be three finite numbers"},
+        BadInvocation{"ik --target 1,2,3,4", "--target must be three finite numbers"},
+        BadInvocation{"ik --out /proc/animkit-cannot-write", "cannot create output folder"},
+        BadInvocation{"ik --no-such-option", "The following argument"},
+        BadInvocation{"", "A subcommand is required"}),
+    [](const auto& param_info) { return "case" + std::to_string(param_info.index); });
+
+TEST(IkCli, UnwritableOutputWritesNothing) {
+  const fs::path dir = fresh_dir("blocked");
+  fs::create_directories(dir);
+  std::ofstream(dir / "file") << "x";
+  const auto r = run_command(kCli + " ik --out " + (dir / "file").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(read(dir / "file"), "x");
+}
+
+TEST(IkCli, HelpExplainsEveryOption) {
+  const auto r = run_command(kCli + " ik --help");
+  ASSERT_EQ(r.exit_code, 0);
+  for (const char* option : {"--shape", "--solver", "--max-iterations", "--tolerance", "--laps",
+                             "--target", "--out", "--cold-start"}) {
+    EXPECT_NE(r.out.find(option), std::string::npos) << option;
+  }
+  const auto top = run_command(kCli + " --help");
+  ASSERT_EQ(top.exit_code, 0);
+  EXPECT_NE(top.out.find("ik"), std::string::npos);
+  EXPECT_NE(top.out.find("demo"), std::string::npos);
+}
+
+TEST(DemoCli, DrawsEveryShapeWithBothSolvers) {
+  const fs::path out = fresh_dir("demo");
+  const auto r = run_command(kCli + " demo --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* shape : {"circle", "square", "heart", "triangle", "star"}) {
+    for (const char* solver : {"ccd", "fabrik"}) {
+      const fs::path dir = out / "ik" / (std::string(shape) + "-" + solver);
+      const auto metrics = nlohmann::json::parse(read(dir / "metrics.json"));
+      EXPECT_EQ(metrics["converged_fraction"], 1.0) << dir;
+      EXPECT_TRUE(fs::exists(dir / "drawing.svg"));
+    }
+  }
+  EXPECT_EQ(count_lines(read(out / "ik" / "summary.csv")), 11);
+}
+
+}  // namespace

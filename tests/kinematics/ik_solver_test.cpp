@@ -1,0 +1,177 @@
+// Tests every IK solver through the one signature they share (solve_ik with a solver enum).
+#include "animkit/kinematics/ik_solver.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <limits>
+
+#include "animkit/kinematics/drawing_session.h"
+#include "animkit/kinematics/forward_kinematics.h"
+#include "animkit/trajectory/lab_shapes.h"
+
+namespace animkit {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+class IkSolverTest : public testing::TestWithParam<IkSolverKind> {
+ protected:
+  Chain chain = *build_chain(lab_arm());
+  Pose pose = rest_pose(chain);
+
+  void expect_bone_lengths_kept(const Pose& p) const {
+    for (int i = 1; i < chain.joint_count(); ++i) {
+      EXPECT_NEAR((p.global_positions[i] - p.global_positions[i - 1]).norm(),
+                  chain.bone_lengths[i], 1e-9)
+          << "bone " << i;
+    }
+  }
+  std::string error_for(const Vec3& target, const IkOptions& options = {}) {
+    const auto result = solve_ik(GetParam(), chain, pose, target, options);
+    return result ? std::string("(no error)") : result.error().message;
+  }
+};
+
+TEST_P(IkSolverTest, ConvergesOnEveryTargetOfEveryLabShapeWarmStarted) {
+  for (LabShape shape : all_lab_shapes()) {
+    DrawingOptions options;
+    options.solver = GetParam();
+    const auto run = run_drawing(chain, lab_shape_targets(shape), options);
+    ASSERT_TRUE(run);
+    for (std::size_t i = 0; i < run->frames.size(); ++i) {
+      const DrawingFrame& f = run->frames[i];
+      EXPECT_TRUE(f.ik.converged) << to_string(shape) << " target " << i << " error " << f.ik.error;
+      EXPECT_LE(f.ik.error, 1e-4);
+      EXPECT_LE(f.ik.iterations, 100);
+      EXPECT_TRUE(f.ik.reachable);
+      EXPECT_LT((f.end_effector - f.target).norm(), 1e-4);
+    }
+  }
+}
+
+TEST_P(IkSolverTest, KeepsBoneLengthsAndLeavesAConsistentPose) {
+  for (const Vec3& target : {Vec3(0.5, 0.0, 0.3), Vec3(-1.0, 0.5, 1.2), Vec3(0.1, 2.5, -0.4)}) {
+    const auto result = solve_ik(GetParam(), chain, pose, target);
+    ASSERT_TRUE(result);
+    EXPECT_TRUE(result->converged);
+    expect_bone_lengths_kept(pose);
+    // Forward kinematics of the solver's rotations reproduces its positions.
+    Pose replay = pose;
+    forward_kinematics(chain, replay, 0);
+    for (int i = 0; i < chain.joint_count(); ++i) {
+      EXPECT_LT((replay.global_positions[i] - pose.global_positions[i]).norm(), 1e-12);
+      EXPECT_NEAR(pose.local_rotations[i].norm(), 1.0, 1e-12);
+    }
+  }
+}
+
+TEST_P(IkSolverTest, UnreachableTargetStraightensTheChainTowardIt) {
+  const Vec3 target(3.0, 0.0, 2.0);  // 3.9 from the root, reach 2.6
+  const auto result = solve_ik(GetParam(), chain, pose, target);
+  ASSERT_TRUE(result);
+  EXPECT_FALSE(result->reachable);
+  EXPECT_FALSE(result->converged);
+  const Vec3 root = chain.root_position();
+  const Vec3 direction = (target - root).normalized();
+  // End effector at full reach on the ray from the root to the target.
+  EXPECT_LT((pose.end_effector() - (root + 2.6 * direction)).norm(), 1e-12);
+  EXPECT_NEAR(result->error, (target - root).norm() - 2.6, 1e-12);
+  // Every joint on that ray: the chain is straight and points at the target.
+  for (int i = 1; i < chain.joint_count(); ++i) {
+    const Vec3 along = pose.global_positions[i] - root;
+    EXPECT_LT(along.cross(direction).norm(), 1e-12) << "joint " << i;
+    EXPECT_GT(along.dot(direction), 0.0);
+  }
+  expect_bone_lengths_kept(pose);
+}
+
+TEST_P(IkSolverTest, TargetStraightBelowTheHangingArmIsReached) {
+  // The lab's triangle starts at (0,0,0): on the line of the hanging arm, where every joint's
+  // direction to the end effector and to the target agree. A singular pose to escape from.
+  const auto result = solve_ik(GetParam(), chain, pose, Vec3(0.0, 0.0, 0.0));
+  ASSERT_TRUE(result);
+  EXPECT_TRUE(result->converged) << "error " << result->error;
+  expect_bone_lengths_kept(pose);
+}
+
+TEST_P(IkSolverTest, TargetAlreadyReachedTakesNoIteration) {
+  const auto result = solve_ik(GetParam(), chain, pose, Vec3(0.0, -0.9, 0.0));
+  ASSERT_TRUE(result);
+  EXPECT_EQ(result->iterations, 0);
+  EXPECT_TRUE(result->converged);
+}
+
+TEST_P(IkSolverTest, SameInputSameBits) {
+  Pose a = rest_pose(chain), b = rest_pose(chain);
+  const auto targets = lab_shape_targets(LabShape::heart);
+  for (const Vec3& t : targets) {
+    const auto ra = solve_ik(GetParam(), chain, a, t);
+    const auto rb = solve_ik(GetParam(), chain, b, t);
+    ASSERT_TRUE(ra && rb);
+    EXPECT_EQ(ra->iterations, rb->iterations);
+    EXPECT_EQ(std::memcmp(&ra->error, &rb->error, sizeof(double)), 0);
+  }
+  for (int i = 0; i < chain.joint_count(); ++i) {
+    EXPECT_EQ(std::memcmp(a.local_rotations[i].coeffs().data(),
+                          b.local_rotations[i].coeffs().data(), 4 * sizeof(double)),
+              0);
+    EXPECT_EQ(std::memcmp(a.global_positions[i].data(), b.global_positions[i].data(),
+                          3 * sizeof(double)),
+              0);
+  }
+}
+
+TEST_P(IkSolverTest, BadInputsGiveClearErrors) {
+  EXPECT_EQ(error_for(Vec3(kNaN, 0, 0)), "target has a non-finite coordinate (nan, 0, 0)");
+  EXPECT_EQ(error_for(Vec3(0, kInf, 0)), "target has a non-finite coordinate (0, inf, 0)");
+  EXPECT_EQ(error_for(Vec3(0.3, 0, 0), IkOptions{.max_iterations = 0}),
+            "max iterations must be at least 1, got 0");
+  EXPECT_EQ(error_for(Vec3(0.3, 0, 0), IkOptions{.tolerance = 0.0}),
+            "tolerance must be a positive finite number, got 0.000000");
+  EXPECT_EQ(error_for(Vec3(0.3, 0, 0), IkOptions{.tolerance = -1e-3}),
+            "tolerance must be a positive finite number, got -0.001000");
+  EXPECT_EQ(error_for(Vec3(0.3, 0, 0), IkOptions{.tolerance = kNaN}),
+            "tolerance must be a positive finite number, got nan");
+  pose.global_positions.pop_back();
+  EXPECT_EQ(error_for(Vec3(0.3, 0, 0)), "pose has 4 joint positions but the chain has 5 joints");
+}
+
+TEST_P(IkSolverTest, ErrorsLeaveThePoseUntouched) {
+  solve_ik(GetParam(), chain, pose, Vec3(0.4, 0.0, 0.1)).value();
+  const Pose before = pose;
+  EXPECT_FALSE(solve_ik(GetParam(), chain, pose, Vec3(kNaN, 0, 0)));
+  for (int i = 0; i < chain.joint_count(); ++i) {
+    EXPECT_EQ(pose.global_positions[i], before.global_positions[i]);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(BothSolvers, IkSolverTest,
+                         testing::Values(IkSolverKind::ccd, IkSolverKind::fabrik),
+                         [](const auto& param_info) { return std::string(to_string(param_info.param)); });
+
+TEST(IkSolverNames, ParseAndPrint) {
+  EXPECT_EQ(parse_ik_solver("ccd"), IkSolverKind::ccd);
+  EXPECT_EQ(parse_ik_solver("fabrik"), IkSolverKind::fabrik);
+  EXPECT_EQ(parse_ik_solver("FABRIK"), std::nullopt);
+  EXPECT_EQ(all_ik_solvers().size(), 2u);
+}
+
+TEST(IkSolvers, FabrikNeedsFewerIterationsThanCcdOnTheStar) {
+  // The lab's question 2, as a property: FABRIK converges in fewer iterations per target.
+  const Chain chain = *build_chain(lab_arm());
+  const auto star = lab_shape_targets(LabShape::star);
+  DrawingOptions ccd, fabrik;
+  ccd.solver = IkSolverKind::ccd;
+  fabrik.solver = IkSolverKind::fabrik;
+  const DrawingSummary c = summarize(*run_drawing(chain, star, ccd));
+  const DrawingSummary f = summarize(*run_drawing(chain, star, fabrik));
+  EXPECT_EQ(c.converged_fraction, 1.0);
+  EXPECT_EQ(f.converged_fraction, 1.0);
+  EXPECT_LT(f.iterations_mean, c.iterations_mean);
+  EXPECT_LT(c.iterations_mean, 20.0);  // double-precision CCD does not stall (the lab's float one does)
+}
+
+}  // namespace
+}  // namespace animkit
