@@ -23,6 +23,7 @@ struct IkArgs {
   double tolerance = IkOptions{}.tolerance;
   int laps = 1;
   bool cold_start = false;
+  std::string fabrik_rotations = "rest";
   std::string target;
   std::string out;
 };
@@ -65,8 +66,15 @@ int run(const IkArgs& args) {
   const auto solver = parse_ik_solver(args.solver);
   if (!solver) return report_error("unknown solver '" + args.solver + "' (expected ccd or fabrik)");
 
+  const auto fabrik_rotations = parse_fabrik_rotations(args.fabrik_rotations);
+  if (!fabrik_rotations) {
+    return report_error("unknown --fabrik-rotations '" + args.fabrik_rotations +
+                        "' (expected rest or previous)");
+  }
+
   DrawingOptions options;
   options.solver = *solver;
+  options.ik.fabrik_rotations = *fabrik_rotations;
   options.ik.max_iterations = args.max_iterations;
   options.ik.tolerance = args.tolerance;
   options.laps = args.laps;
@@ -109,6 +117,10 @@ std::function<int()> add_ik_command(CLI::App& app) {
       ->capture_default_str();
   ik->add_flag("--cold-start", args->cold_start,
                "Solve every target from the rest pose instead of the previous frame's pose");
+  ik->add_option("--fabrik-rotations", args->fabrik_rotations,
+                 "How FABRIK recovers joint rotations: rest (the lab's, shortest arc from the rest "
+                 "bone) or previous (smallest change from the last frame, no twist jumps)")
+      ->capture_default_str();
   ik->add_option("--target", args->target,
                  "Solve one target X,Y,Z from the rest pose, print the result and exit");
   ik->add_option("--out", args->out,

@@ -27,6 +27,7 @@ std::string ik_metrics_json(const IkRunLabel& label, const DrawingOptions& optio
       {"options",
        {{"max_iterations", options.ik.max_iterations},
         {"tolerance", options.ik.tolerance},
+        {"fabrik_rotations", to_string(options.ik.fabrik_rotations)},
         {"laps", options.laps},
         {"warm_start", options.warm_start}}},
   };

@@ -37,13 +37,21 @@ void backward_forward_pass(const Chain& chain, Pose& pose, const Vec3& target) {
   }
 }
 
-// Rotations from positions: joint i's global rotation is the shortest arc from its rest bone
-// offset to its new bone; local = parent^-1 * global. The end joint keeps its local rotation.
-void recover_rotations(const Chain& chain, Pose& pose) {
+// Rotations from positions (see FabrikRotations); local = parent^-1 * global. The end joint
+// keeps its local rotation. Forward kinematics then makes the pose exactly consistent.
+void recover_rotations(const Chain& chain, Pose& pose, FabrikRotations mode) {
   const auto& p = pose.global_positions;
   Quat parent = Quat::Identity();
   for (int i = 0; i + 1 < chain.joint_count(); ++i) {
-    const Quat global = shortest_arc(chain.local_offsets[i + 1], p[i + 1] - p[i]);
+    const Vec3 bone = p[i + 1] - p[i];
+    Quat global;
+    if (mode == FabrikRotations::from_rest) {
+      global = shortest_arc(chain.local_offsets[i + 1], bone);
+    } else {
+      // global_rotations still hold the pose the solve started from.
+      const Quat& before = pose.global_rotations[i];
+      global = (shortest_arc(before * chain.local_offsets[i + 1], bone) * before).normalized();
+    }
     // A product of unit quaternions, rebuilt from fresh arcs at every solve: no drift to undo.
     pose.local_rotations[i] = parent.conjugate() * global;
     parent = global;
@@ -79,7 +87,7 @@ Result<IkResult> solve_fabrik(const Chain& chain, Pose& pose, const Vec3& target
       error2 = (pose.end_effector() - target).squaredNorm();
     }
   }
-  if (result.iterations > 0) recover_rotations(chain, pose);
+  if (result.iterations > 0) recover_rotations(chain, pose, options.fabrik_rotations);
   result.error = (pose.end_effector() - target).norm();
   result.converged = result.error <= options.tolerance;
   return result;

@@ -43,6 +43,16 @@ std::optional<IkSolverKind> parse_ik_solver(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view to_string(FabrikRotations mode) {
+  return mode == FabrikRotations::from_rest ? "rest" : "previous";
+}
+
+std::optional<FabrikRotations> parse_fabrik_rotations(std::string_view name) {
+  if (name == "rest") return FabrikRotations::from_rest;
+  if (name == "previous") return FabrikRotations::from_previous;
+  return std::nullopt;
+}
+
 Result<IkResult> solve_ik(IkSolverKind kind, const Chain& chain, Pose& pose, const Vec3& target,
                           const IkOptions& options) {
   return kind == IkSolverKind::ccd ? solve_ccd(chain, pose, target, options)

@@ -95,6 +95,7 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(
         BadInvocation{"ik --shape hexagon", "unknown shape 'hexagon'"},
         BadInvocation{"ik --solver jacobian", "unknown solver 'jacobian'"},
+        BadInvocation{"ik --fabrik-rotations twist", "unknown --fabrik-rotations 'twist'"},
         BadInvocation{"ik --tolerance 0", "tolerance must be a positive finite number"},
         BadInvocation{"ik --tolerance -1", "tolerance must be a positive finite number"},
         BadInvocation{"ik --tolerance abc", "Could not convert"},
@@ -121,7 +122,7 @@ TEST(IkCli, HelpExplainsEveryOption) {
   const auto r = run_command(kCli + " ik --help");
   ASSERT_EQ(r.exit_code, 0);
   for (const char* option : {"--shape", "--solver", "--max-iterations", "--tolerance", "--laps",
-                             "--target", "--out", "--cold-start"}) {
+                             "--target", "--out", "--cold-start", "--fabrik-rotations"}) {
     EXPECT_NE(r.out.find(option), std::string::npos) << option;
   }
   const auto top = run_command(kCli + " --help");

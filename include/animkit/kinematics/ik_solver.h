@@ -18,6 +18,11 @@ std::optional<IkSolverKind> parse_ik_solver(std::string_view name);
 /// Every solver, in menu order.
 std::span<const IkSolverKind> all_ik_solvers();
 
+/// "rest" or "previous".
+std::string_view to_string(FabrikRotations mode);
+/// Parses "rest" / "previous"; nothing for any other name.
+std::optional<FabrikRotations> parse_fabrik_rotations(std::string_view name);
+
 /// Runs the chosen solver; see solve_ccd() and solve_fabrik().
 Result<IkResult> solve_ik(IkSolverKind kind, const Chain& chain, Pose& pose, const Vec3& target,
                           const IkOptions& options = {});

@@ -6,10 +6,23 @@
 
 namespace animkit {
 
+/// How FABRIK turns the joint positions it found back into joint rotations.
+enum class FabrikRotations {
+  /// The lab's way: each joint's world rotation is the shortest arc from its rest bone
+  /// direction to its new one. A function of the positions alone, but where a bone points
+  /// nearly opposite to its rest direction the arc's axis swings fast, so the joint twists
+  /// visibly between frames (the jitter of the lab's question 3).
+  from_rest,
+  /// Each joint's world rotation is its previous one turned by the shortest arc from its
+  /// previous bone direction to its new one: the smallest change that fits, so no twist jumps.
+  from_previous,
+};
+
 /// Options of one IK solve. The defaults are the lab's (100 iterations, eps = 1e-4).
 struct IkOptions {
   int max_iterations = 100;  ///< cap on full solver iterations; >= 1
   double tolerance = 1e-4;   ///< converged when |end effector - target| <= tolerance; > 0
+  FabrikRotations fabrik_rotations = FabrikRotations::from_rest;  ///< FABRIK only; CCD ignores it
 
   std::optional<Error> validate() const;
 };
