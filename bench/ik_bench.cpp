@@ -3,9 +3,8 @@
 // straightforward float versions in the same binary. Prints the ratios at the end.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cstdio>
-#include <map>
-#include <string>
 
 #include "animkit/kinematics/ccd.h"
 #include "animkit/kinematics/fabrik.h"
@@ -27,54 +26,55 @@ const animkit::Chain& arm() {
   return chain;
 }
 
-void set_counters(benchmark::State& state, double solves, double iterations, double converged) {
-  // Rate of "solves per microsecond", inverted: microseconds per target.
-  state.counters["us_per_target"] = benchmark::Counter(
-      solves * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+struct SolveOutcome {
+  int iterations;
+  bool converged;
+};
+
+// Draws the star once per benchmark iteration from `rest`, one `solve_one(state, target)` per
+// target; counters give the per-target cost (timed around the solves only) and quality.
+template <class ArmState, class SolveOne>
+void time_star(benchmark::State& state, const ArmState& rest, SolveOne solve_one) {
+  ArmState arm_state = rest;
+  double iterations = 0, converged = 0, solves = 0;
+  std::chrono::duration<double> seconds{0.0};
+  for (auto _ : state) {
+    arm_state = rest;
+    const auto start = std::chrono::steady_clock::now();
+    for (const Vec3& t : star()) {
+      const SolveOutcome outcome = solve_one(arm_state, t);
+      iterations += outcome.iterations;
+      converged += outcome.converged ? 1 : 0;
+      ++solves;
+    }
+    seconds += std::chrono::steady_clock::now() - start;
+    benchmark::DoNotOptimize(&arm_state);
+  }
+  state.counters["us_per_target"] = 1e6 * seconds.count() / solves;
   state.counters["iters_per_target"] = iterations / solves;
   state.counters["converged"] = converged / solves;
 }
 
-// Draws the star once per benchmark iteration; counters give per-target cost and quality.
-template <class Solve>
-void draw_star(benchmark::State& state, Solve solve) {
-  const auto& targets = star();
-  const animkit::Pose rest = animkit::rest_pose(arm());
-  animkit::Pose pose = rest;
-  double iterations = 0, converged = 0, solves = 0;
-  for (auto _ : state) {
-    pose = rest;
-    for (const Vec3& t : targets) {
-      const auto result = solve(arm(), pose, t, animkit::IkOptions{});
-      iterations += result->iterations;
-      converged += result->converged ? 1 : 0;
-      ++solves;
-    }
-    benchmark::DoNotOptimize(pose.global_positions.data());
-  }
-  set_counters(state, solves, iterations, converged);
+template <class Solver>
+void animkit_star(benchmark::State& state, Solver solver) {
+  time_star(state, animkit::rest_pose(arm()), [&](animkit::Pose& pose, const Vec3& t) {
+    const auto result = solver(arm(), pose, t, animkit::IkOptions{});
+    return SolveOutcome{result->iterations, result->converged};
+  });
 }
 
-void BM_CcdStar(benchmark::State& state) { draw_star(state, animkit::solve_ccd); }
-void BM_FabrikStar(benchmark::State& state) { draw_star(state, animkit::solve_fabrik); }
+void BM_CcdStar(benchmark::State& state) { animkit_star(state, animkit::solve_ccd); }
+void BM_FabrikStar(benchmark::State& state) { animkit_star(state, animkit::solve_fabrik); }
 
+// The lab's float solvers on the same targets, cast to float.
 template <int (*Solve)(animkit::bench::LabFloatArm&, const Eigen::Vector3f&, int, float)>
 void lab_float_star(benchmark::State& state) {
-  std::vector<Eigen::Vector3f> targets;
-  for (const Vec3& t : star()) targets.push_back(t.cast<float>());
-  const auto rest = animkit::bench::LabFloatArm::rest();
-  auto arm_state = rest;
-  double iterations = 0, converged = 0, solves = 0;
-  for (auto _ : state) {
-    arm_state = rest;
-    for (const auto& t : targets) {
-      iterations += Solve(arm_state, t, 100, 1e-4f);
-      converged += (arm_state.end_effector() - t).norm() <= 1e-4f ? 1 : 0;
-      ++solves;
-    }
-    benchmark::DoNotOptimize(arm_state.global_position.data());
-  }
-  set_counters(state, solves, iterations, converged);
+  time_star(state, animkit::bench::LabFloatArm::rest(),
+            [](animkit::bench::LabFloatArm& lab_arm, const Vec3& t) {
+              const Eigen::Vector3f target = t.cast<float>();
+              const int iterations = Solve(lab_arm, target, 100, 1e-4f);
+              return SolveOutcome{iterations, (lab_arm.end_effector() - target).norm() <= 1e-4f};
+            });
 }
 
 BENCHMARK(BM_CcdStar);

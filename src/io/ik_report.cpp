@@ -76,7 +76,7 @@ struct TopViewFrame {
 }  // namespace
 
 std::string ik_drawing_svg(const IkRunLabel& label, const DrawingRun& run) {
-  constexpr double size = 600.0, margin = 30.0, title_height = 50.0;
+  constexpr double size = 600.0, margin = 30.0, title_height = 66.0;
   TopViewFrame view;
   for (const DrawingFrame& f : run.frames) {
     view.include(f.target);
@@ -85,6 +85,10 @@ std::string ik_drawing_svg(const IkRunLabel& label, const DrawingRun& run) {
   view.fit(size, margin, title_height);
 
   const DrawingSummary s = summarize(run);
+  char numbers[256];
+  std::snprintf(numbers, sizeof numbers,
+                "%d targets, %.1f%% converged, %.2f iterations per target, max joint step %.4f rad",
+                s.targets, 100.0 * s.converged_fraction, s.iterations_mean, s.max_joint_step_rad);
   std::ostringstream svg;
   svg.precision(6);
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << size << "\" height=\""
@@ -94,10 +98,10 @@ std::string ik_drawing_svg(const IkRunLabel& label, const DrawingRun& run) {
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << "<text x=\"" << margin << "\" y=\"28\" font-family=\"sans-serif\" font-size=\"20\">"
       << label.shape << " \xE2\x80\x94 " << label.solver << "</text>\n"
-      << "<text x=\"" << margin << "\" y=\"46\" font-family=\"sans-serif\" font-size=\"12\" "
-      << "fill=\"#555\">top view of y = 0; targets green, drawn path red; " << s.targets
-      << " targets, " << s.converged_fraction * 100.0 << "% converged, "
-      << s.iterations_mean << " iterations on average</text>\n";
+      << "<text font-family=\"sans-serif\" font-size=\"12\" fill=\"#555\">"
+      << "<tspan x=\"" << margin << "\" y=\"46\">top view of the plane y = 0 (x right, z down): "
+      << "targets green, drawn path red</tspan>"
+      << "<tspan x=\"" << margin << "\" y=\"62\">" << numbers << "</tspan></text>\n";
 
   svg << "<g fill=\"#00cc00\">\n";
   for (std::size_t i = 0; i < run.frames.size(); ++i) {

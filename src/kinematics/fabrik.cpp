@@ -1,5 +1,7 @@
 #include "animkit/kinematics/fabrik.h"
 
+#include <cmath>
+
 #include "animkit/core/quaternion_math.h"
 #include "animkit/kinematics/forward_kinematics.h"
 #include "ik_common.h"
@@ -9,12 +11,15 @@ namespace animkit {
 namespace {
 
 // Moves `joint` onto the sphere of radius `length` around `anchor`, along the line joining
-// them (the "reaching" step of FABRIK). If they coincide, `fallback` gives the direction.
-void reach_toward(const Vec3& anchor, Vec3& joint, double length, const Vec3& fallback) {
+// them (the "reaching" step of FABRIK). When the two coincide the line is undefined and the
+// bone takes its direction from the pose the solve started with (`rest_bone` turned by
+// `rotation`, negated for the backward pass); computed only then, as it is rarely needed.
+void reach_toward(const Vec3& anchor, Vec3& joint, double length, const Quat& rotation,
+                  const Vec3& rest_bone, double sign) {
   const Vec3 d = joint - anchor;
-  const double norm = d.norm();
-  joint = norm > 0.0 ? Vec3(anchor + d * (length / norm))
-                     : Vec3(anchor + fallback.normalized() * length);
+  const double norm2 = d.squaredNorm();
+  joint = norm2 > 0.0 ? Vec3(anchor + d * (length / std::sqrt(norm2)))
+                      : Vec3(anchor + (sign * length) * (rotation * rest_bone).normalized());
 }
 
 // FABRIK, Aristidou & Lasenby 2011, Alg. 1 (reachable branch), in place on the positions:
@@ -22,18 +27,17 @@ void reach_toward(const Vec3& anchor, Vec3& joint, double length, const Vec3& fa
 // pins the root back and walks out again. Each pass keeps every bone at its length.
 void backward_forward_pass(const Chain& chain, Pose& pose, const Vec3& target) {
   auto& p = pose.global_positions;
+  const auto& g = pose.global_rotations;
   const int end = chain.joint_count() - 1;
   p[end] = target;
   // The backward pass stops at joint 1: joint 0 would be moved only to be put back on the
   // root by the forward pass, which reads nothing of it.
   for (int i = end - 1; i >= 1; --i) {
-    reach_toward(p[i + 1], p[i], chain.bone_lengths[i + 1],
-                 -(pose.global_rotations[i] * chain.local_offsets[i + 1]));
+    reach_toward(p[i + 1], p[i], chain.bone_lengths[i + 1], g[i], chain.local_offsets[i + 1], -1.0);
   }
   p[0] = chain.root_position();
   for (int i = 0; i < end; ++i) {
-    reach_toward(p[i], p[i + 1], chain.bone_lengths[i + 1],
-                 pose.global_rotations[i] * chain.local_offsets[i + 1]);
+    reach_toward(p[i], p[i + 1], chain.bone_lengths[i + 1], g[i], chain.local_offsets[i + 1], 1.0);
   }
 }
 
