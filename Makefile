@@ -35,7 +35,7 @@ test-sanitize: deps
 test: test-release test-sanitize
 
 bench: build
-	$(RELEASE_DIR)/bench/ik_bench
+	$(RELEASE_DIR)/bench/ik_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
 format:
 	clang-format -i $$(git ls-files '*.h' '*.cpp')

@@ -63,8 +63,12 @@ void animkit_star(benchmark::State& state, Solver solver) {
   });
 }
 
-void BM_CcdStar(benchmark::State& state) { animkit_star(state, animkit::solve_ccd); }
-void BM_FabrikStar(benchmark::State& state) { animkit_star(state, animkit::solve_fabrik); }
+void BM_CcdStar(benchmark::State& state) {
+  animkit_star(state, animkit::solve_ccd);
+}
+void BM_FabrikStar(benchmark::State& state) {
+  animkit_star(state, animkit::solve_fabrik);
+}
 
 // The lab's float solvers on the same targets, cast to float.
 template <int (*Solve)(animkit::bench::LabFloatArm&, const Eigen::Vector3f&, int, float)>

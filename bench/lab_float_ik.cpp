@@ -10,8 +10,8 @@ using Eigen::Quaternionf;
 using Eigen::Vector3f;
 
 LabFloatArm LabFloatArm::rest() {
-  const Vector3f init[] = {{0.f, 1.7f, 0.f}, {0.f, 0.9f, 0.f}, {0.f, 0.5f, 0.f}, {0.f, 0.3f, 0.f},
-                           {0.f, -0.9f, 0.f}};
+  const Vector3f init[] = {
+      {0.f, 1.7f, 0.f}, {0.f, 0.9f, 0.f}, {0.f, 0.5f, 0.f}, {0.f, 0.3f, 0.f}, {0.f, -0.9f, 0.f}};
   LabFloatArm arm;
   for (int i = 0; i < 5; ++i) {
     arm.local_rotation.push_back(Quaternionf::Identity());
@@ -46,7 +46,8 @@ void lab_forward_kinematics(LabFloatArm& arm, int start) {
   }
   for (std::size_t i = static_cast<std::size_t>(start); i < arm.local_offset.size(); ++i) {
     arm.global_rotation[i] = arm.global_rotation[i - 1] * arm.local_rotation[i];
-    arm.global_position[i] = arm.global_position[i - 1] + arm.global_rotation[i - 1] * arm.local_offset[i];
+    arm.global_position[i] =
+        arm.global_position[i - 1] + arm.global_rotation[i - 1] * arm.local_offset[i];
   }
 }
 
@@ -85,8 +86,9 @@ int lab_fabrik(LabFloatArm& arm, const Vector3f& target, int max_iterations, flo
     arm.global_position = forward;
   }
   for (int i = 0; i < n - 1; ++i) {
-    arm.global_rotation[i] = glm_rotation(arm.local_offset[i + 1].normalized(),
-                                          (arm.global_position[i + 1] - arm.global_position[i]).normalized());
+    arm.global_rotation[i] =
+        glm_rotation(arm.local_offset[i + 1].normalized(),
+                     (arm.global_position[i + 1] - arm.global_position[i]).normalized());
   }
   arm.local_rotation[0] = arm.global_rotation[0];
   for (int i = 1; i < n - 1; ++i) {

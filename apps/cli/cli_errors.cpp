@@ -8,8 +8,7 @@
 namespace animkit::cli {
 
 int report_error(std::string_view message) {
-  std::fprintf(stderr, "animkit: error: %.*s\n", static_cast<int>(message.size()),
-               message.data());
+  std::fprintf(stderr, "animkit: error: %.*s\n", static_cast<int>(message.size()), message.data());
   return kExitBadInput;
 }
 

@@ -29,9 +29,10 @@ int run(const DemoArgs& args) {
   const std::filesystem::path ik_dir = std::filesystem::path(args.out) / "ik";
   if (auto ok = ensure_output_directory(ik_dir); !ok) return report_error(ok.error().message);
 
-  std::printf("The lab's arm draws its five shapes with both solvers (lab defaults: %d "
-              "iterations, tolerance %g, warm start).\n\n",
-              IkOptions{}.max_iterations, IkOptions{}.tolerance);
+  std::printf(
+      "The lab's arm draws its five shapes with both solvers (lab defaults: %d "
+      "iterations, tolerance %g, warm start).\n\n",
+      IkOptions{}.max_iterations, IkOptions{}.tolerance);
   print_ik_table_header();
   std::string csv =
       "shape,solver,targets,converged_fraction,unreachable_targets,iterations_mean,"
@@ -69,8 +70,9 @@ int run(const DemoArgs& args) {
 std::function<int()> add_demo_command(CLI::App& app) {
   auto args = std::make_shared<DemoArgs>();
   CLI::App* demo = app.add_subcommand(
-      "demo", "Runs the built-in default scenes (the lab's arm drawing every shape with CCD and "
-              "FABRIK), prints a summary table and writes every output to a folder.");
+      "demo",
+      "Runs the built-in default scenes (the lab's arm drawing every shape with CCD and "
+      "FABRIK), prints a summary table and writes every output to a folder.");
   demo->add_option("--out", args->out, "Output folder (created if needed)")->capture_default_str();
   return [args] { return run(*args); };
 }

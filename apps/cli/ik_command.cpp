@@ -30,7 +30,8 @@ struct IkArgs {
 
 std::string shape_names() {
   std::string names;
-  for (LabShape s : all_lab_shapes()) names += (names.empty() ? "" : ", ") + std::string(to_string(s));
+  for (LabShape s : all_lab_shapes())
+    names += (names.empty() ? "" : ", ") + std::string(to_string(s));
   return names;
 }
 
@@ -95,7 +96,8 @@ int run(const IkArgs& args) {
   }
   print_ik_table_header();
   print_ik_table_row(label.shape, label.solver, summarize(*run));
-  if (!args.out.empty()) std::printf("wrote metrics.json, path.csv, drawing.svg to %s\n", args.out.c_str());
+  if (!args.out.empty())
+    std::printf("wrote metrics.json, path.csv, drawing.svg to %s\n", args.out.c_str());
   return 0;
 }
 
@@ -104,8 +106,9 @@ int run(const IkArgs& args) {
 std::function<int()> add_ik_command(CLI::App& app) {
   auto args = std::make_shared<IkArgs>();
   CLI::App* ik = app.add_subcommand(
-      "ik", "The lab's arm draws a shape with inverse kinematics, one target per frame "
-            "(warm-started from the previous frame), and reports what each solve did.");
+      "ik",
+      "The lab's arm draws a shape with inverse kinematics, one target per frame "
+      "(warm-started from the previous frame), and reports what each solve did.");
   ik->add_option("--shape", args->shape, "Shape to draw: " + shape_names())->capture_default_str();
   ik->add_option("--solver", args->solver, "IK solver: ccd or fabrik")->capture_default_str();
   ik->add_option("--max-iterations", args->max_iterations, "Iteration cap per target (>= 1)")

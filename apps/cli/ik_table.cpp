@@ -10,8 +10,7 @@ void print_ik_table_header() {
               "us/target");
 }
 
-void print_ik_table_row(std::string_view shape, std::string_view solver,
-                        const DrawingSummary& s) {
+void print_ik_table_row(std::string_view shape, std::string_view solver, const DrawingSummary& s) {
   std::printf("%-9.*s %-7.*s %7d %9.1f%% %11d %9.2f %8d %10.2e %13.4f %11.2f\n",
               static_cast<int>(shape.size()), shape.data(), static_cast<int>(solver.size()),
               solver.data(), s.targets, 100.0 * s.converged_fraction, s.unreachable_targets,

@@ -1,12 +1,12 @@
 #include "animkit/io/atomic_write.h"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <string>
 #include <system_error>
-
-#include <unistd.h>
 
 namespace animkit {
 

@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <limits>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "animkit/io/atomic_write.h"
 
@@ -41,9 +40,9 @@ std::string ik_path_csv(const DrawingRun& run) {
   for (std::size_t i = 0; i < run.frames.size(); ++i) {
     const DrawingFrame& f = run.frames[i];
     std::snprintf(line, sizeof line, "%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%.17g,%d,%d\n", i,
-                  f.target.x(), f.target.y(), f.target.z(), f.end_effector.x(),
-                  f.end_effector.y(), f.end_effector.z(), f.ik.iterations, f.ik.error,
-                  f.ik.converged ? 1 : 0, f.ik.reachable ? 1 : 0);
+                  f.target.x(), f.target.y(), f.target.z(), f.end_effector.x(), f.end_effector.y(),
+                  f.end_effector.z(), f.ik.iterations, f.ik.error, f.ik.converged ? 1 : 0,
+                  f.ik.reachable ? 1 : 0);
     out += line;
   }
   return out;
@@ -92,8 +91,7 @@ std::string ik_drawing_svg(const IkRunLabel& label, const DrawingRun& run) {
   std::ostringstream svg;
   svg.precision(6);
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << size << "\" height=\""
-      << size + title_height << "\" viewBox=\"0 0 " << size << ' ' << size + title_height
-      << "\">\n"
+      << size + title_height << "\" viewBox=\"0 0 " << size << ' ' << size + title_height << "\">\n"
       << "<title>" << label.shape << " drawn with " << label.solver << "</title>\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << "<text x=\"" << margin << "\" y=\"28\" font-family=\"sans-serif\" font-size=\"20\">"
@@ -128,8 +126,8 @@ std::string ik_drawing_svg(const IkRunLabel& label, const DrawingRun& run) {
 Result<void> write_ik_reports(const std::filesystem::path& dir, const IkRunLabel& label,
                               const DrawingOptions& options, const DrawingRun& run) {
   if (auto ok = ensure_output_directory(dir); !ok) return ok;
-  if (auto ok = write_file_atomic(dir / "metrics.json",
-                                  ik_metrics_json(label, options, summarize(run)));
+  if (auto ok =
+          write_file_atomic(dir / "metrics.json", ik_metrics_json(label, options, summarize(run)));
       !ok) {
     return ok;
   }

@@ -41,8 +41,8 @@ std::optional<Error> ChainDesc::validate() const {
     }
   }
   if (!local_rotations.empty() && local_rotations.size() != n) {
-    return Error{"local_rotations has " + std::to_string(local_rotations.size()) +
-                 " entries for " + std::to_string(n) + " joints"};
+    return Error{"local_rotations has " + std::to_string(local_rotations.size()) + " entries for " +
+                 std::to_string(n) + " joints"};
   }
   for (std::size_t i = 0; i < local_rotations.size(); ++i) {
     const Quat& q = local_rotations[i];
@@ -58,8 +58,8 @@ std::optional<Error> ChainDesc::validate() const {
 }
 
 ChainDesc lab_arm() {
-  const Vec3 rest[] = {{0.0, 1.7, 0.0}, {0.0, 0.9, 0.0}, {0.0, 0.5, 0.0}, {0.0, 0.3, 0.0},
-                       {0.0, -0.9, 0.0}};
+  const Vec3 rest[] = {
+      {0.0, 1.7, 0.0}, {0.0, 0.9, 0.0}, {0.0, 0.5, 0.0}, {0.0, 0.3, 0.0}, {0.0, -0.9, 0.0}};
   return ChainDesc::from_rest_positions(rest);
 }
 
@@ -68,8 +68,8 @@ Result<Chain> build_chain(const ChainDesc& desc) {
   Chain chain;
   const std::size_t n = desc.local_offsets.size();
   chain.local_offsets = desc.local_offsets;
-  chain.rest_rotations = desc.local_rotations.empty() ? std::vector<Quat>(n, Quat::Identity())
-                                                      : desc.local_rotations;
+  chain.rest_rotations =
+      desc.local_rotations.empty() ? std::vector<Quat>(n, Quat::Identity()) : desc.local_rotations;
   for (Quat& q : chain.rest_rotations) q.normalize();  // remove the tolerated 1e-6 drift
   chain.bone_lengths.assign(n, 0.0);
   double longest = 0.0;

@@ -73,9 +73,12 @@ std::optional<Error> validate_ik_input(const Chain& chain, const Pose& pose, con
     return Error{"pose has " + std::to_string(size) + " " + what + " but the chain has " +
                  std::to_string(n) + " joints"};
   };
-  if (pose.local_rotations.size() != n) return mismatch(pose.local_rotations.size(), "local rotations");
-  if (pose.global_rotations.size() != n) return mismatch(pose.global_rotations.size(), "global rotations");
-  if (pose.global_positions.size() != n) return mismatch(pose.global_positions.size(), "joint positions");
+  if (pose.local_rotations.size() != n)
+    return mismatch(pose.local_rotations.size(), "local rotations");
+  if (pose.global_rotations.size() != n)
+    return mismatch(pose.global_rotations.size(), "global rotations");
+  if (pose.global_positions.size() != n)
+    return mismatch(pose.global_positions.size(), "joint positions");
   return options.validate();
 }
 

@@ -78,7 +78,9 @@ struct BadInvocation {
   std::string message;  // expected start of the stderr line after "animkit: error: "
 };
 
-void PrintTo(const BadInvocation& b, std::ostream* os) { *os << "animkit " << b.args; }
+void PrintTo(const BadInvocation& b, std::ostream* os) {
+  *os << "animkit " << b.args;
+}
 
 class IkCliBadInput : public testing::TestWithParam<BadInvocation> {};
 

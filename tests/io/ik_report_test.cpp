@@ -68,7 +68,8 @@ TEST_F(IkReport, SvgDrawsGreenTargetsAndARedPathWithATitle) {
   EXPECT_NE(svg.find("fill=\"#00cc00\""), std::string::npos);
   EXPECT_NE(svg.find("stroke=\"#e00000\""), std::string::npos);
   std::size_t circles = 0;
-  for (auto at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
+  for (auto at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1))
+    ++circles;
   EXPECT_EQ(circles, 150u);
   EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
 }

@@ -19,7 +19,8 @@ TEST(Chain, LabArmHasTheLabsBonesAndReach) {
   const double lengths[] = {0.0, 0.8, 0.4, 0.2, 1.2};
   for (int i = 0; i < 5; ++i) EXPECT_NEAR(chain->bone_lengths[i], lengths[i], 1e-15);
   EXPECT_NEAR(chain->reach, 2.6, 1e-15);
-  EXPECT_EQ(chain->min_reach, 0.0);  // 1.2 < 0.8 + 0.4 + 0.2: every point near the root is reachable
+  EXPECT_EQ(chain->min_reach,
+            0.0);  // 1.2 < 0.8 + 0.4 + 0.2: every point near the root is reachable
   EXPECT_EQ(chain->root_position(), Vec3(0.0, 1.7, 0.0));
 }
 

@@ -1,21 +1,23 @@
 #include "animkit/kinematics/forward_kinematics.h"
 
-#include "animkit/core/quaternion_math.h"
-
 #include <gtest/gtest.h>
 
 #include <numbers>
+
+#include "animkit/core/quaternion_math.h"
 
 namespace animkit {
 namespace {
 
 constexpr double kHalfPi = std::numbers::pi / 2.0;
 
-Quat about(const Vec3& axis, double angle) { return Quat(Eigen::AngleAxisd(angle, axis)); }
+Quat about(const Vec3& axis, double angle) {
+  return Quat(Eigen::AngleAxisd(angle, axis));
+}
 
 void expect_near(const Vec3& actual, const Vec3& expected) {
-  EXPECT_LT((actual - expected).norm(), 1e-14) << "actual (" << actual.transpose()
-                                               << ") expected (" << expected.transpose() << ")";
+  EXPECT_LT((actual - expected).norm(), 1e-14)
+      << "actual (" << actual.transpose() << ") expected (" << expected.transpose() << ")";
 }
 
 class ForwardKinematics : public testing::Test {

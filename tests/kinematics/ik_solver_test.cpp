@@ -23,8 +23,8 @@ class IkSolverTest : public testing::TestWithParam<IkSolverKind> {
 
   void expect_bone_lengths_kept(const Pose& p) const {
     for (int i = 1; i < chain.joint_count(); ++i) {
-      EXPECT_NEAR((p.global_positions[i] - p.global_positions[i - 1]).norm(),
-                  chain.bone_lengths[i], 1e-9)
+      EXPECT_NEAR((p.global_positions[i] - p.global_positions[i - 1]).norm(), chain.bone_lengths[i],
+                  1e-9)
           << "bone " << i;
     }
   }
@@ -117,9 +117,9 @@ TEST_P(IkSolverTest, SameInputSameBits) {
     EXPECT_EQ(std::memcmp(a.local_rotations[i].coeffs().data(),
                           b.local_rotations[i].coeffs().data(), 4 * sizeof(double)),
               0);
-    EXPECT_EQ(std::memcmp(a.global_positions[i].data(), b.global_positions[i].data(),
-                          3 * sizeof(double)),
-              0);
+    EXPECT_EQ(
+        std::memcmp(a.global_positions[i].data(), b.global_positions[i].data(), 3 * sizeof(double)),
+        0);
   }
 }
 
@@ -149,7 +149,9 @@ TEST_P(IkSolverTest, ErrorsLeaveThePoseUntouched) {
 
 INSTANTIATE_TEST_SUITE_P(BothSolvers, IkSolverTest,
                          testing::Values(IkSolverKind::ccd, IkSolverKind::fabrik),
-                         [](const auto& param_info) { return std::string(to_string(param_info.param)); });
+                         [](const auto& param_info) {
+                           return std::string(to_string(param_info.param));
+                         });
 
 TEST(IkSolverNames, ParseAndPrint) {
   EXPECT_EQ(parse_ik_solver("ccd"), IkSolverKind::ccd);
@@ -170,7 +172,8 @@ TEST(IkSolvers, FabrikNeedsFewerIterationsThanCcdOnTheStar) {
   EXPECT_EQ(c.converged_fraction, 1.0);
   EXPECT_EQ(f.converged_fraction, 1.0);
   EXPECT_LT(f.iterations_mean, c.iterations_mean);
-  EXPECT_LT(c.iterations_mean, 20.0);  // double-precision CCD does not stall (the lab's float one does)
+  EXPECT_LT(c.iterations_mean,
+            20.0);  // double-precision CCD does not stall (the lab's float one does)
 }
 
 TEST(FabrikRotations, FromPreviousAvoidsTwistJumpsAndKeepsTheSolution) {

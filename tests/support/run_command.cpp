@@ -22,7 +22,8 @@ std::string slurp(const std::filesystem::path& path) {
 CommandOutput run_command(const std::string& command) {
   static int counter = 0;
   const auto dir = std::filesystem::temp_directory_path();
-  const std::string stem = "animkit_cmd_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
+  const std::string stem =
+      "animkit_cmd_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
   const auto out_path = dir / (stem + ".out"), err_path = dir / (stem + ".err");
   const std::string full =
       command + " >" + out_path.string() + " 2>" + err_path.string() + " </dev/null";

@@ -33,11 +33,11 @@ ChainDesc lab_arm();
 
 /// Immutable runtime model of a validated chain; build it with build_chain().
 struct Chain {
-  std::vector<Vec3> local_offsets;    ///< as in ChainDesc (parent frame, scene units)
-  std::vector<double> bone_lengths;   ///< |local_offsets[i]|; bone_lengths[0] = 0 (the root)
-  std::vector<Quat> rest_rotations;   ///< local rotations at rest, one per joint
-  double reach = 0.0;       ///< sum of bone lengths: farthest the end effector gets from the root
-  double min_reach = 0.0;   ///< nearest it gets: max(0, 2 * longest bone - reach)
+  std::vector<Vec3> local_offsets;   ///< as in ChainDesc (parent frame, scene units)
+  std::vector<double> bone_lengths;  ///< |local_offsets[i]|; bone_lengths[0] = 0 (the root)
+  std::vector<Quat> rest_rotations;  ///< local rotations at rest, one per joint
+  double reach = 0.0;      ///< sum of bone lengths: farthest the end effector gets from the root
+  double min_reach = 0.0;  ///< nearest it gets: max(0, 2 * longest bone - reach)
 
   int joint_count() const { return static_cast<int>(local_offsets.size()); }
   const Vec3& root_position() const { return local_offsets[0]; }

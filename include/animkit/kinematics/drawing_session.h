@@ -23,7 +23,7 @@ struct DrawingOptions {
 struct DrawingFrame {
   int lap = 0;
   Vec3 target = Vec3::Zero();
-  Vec3 end_effector = Vec3::Zero();   ///< after the solve (world)
+  Vec3 end_effector = Vec3::Zero();  ///< after the solve (world)
   IkResult ik;
   /// Largest change of any joint's local rotation since the previous frame of the same lap
   /// (radians; 0 on a lap's first frame): the frame-to-frame jitter of the lab's question 3.
