@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "../support/run_command.h"
+#include "../support/temp_files.h"
 
 namespace {
 
@@ -17,17 +18,9 @@ using animkit::testing_support::run_command;
 const std::string kCli = ANIMKIT_CLI_PATH;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / ("cli_" + name);
-  fs::remove_all(dir);
-  return dir;
+  return animkit::testing_support::fresh_dir("cli_" + name);
 }
-
-std::string read(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using animkit::testing_support::read_file;
 
 int count_lines(const std::string& text) {
   return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
@@ -38,7 +31,7 @@ TEST(IkCli, WritesMetricsPathAndDrawing) {
   const auto r = run_command(kCli + " ik --shape star --solver fabrik --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("star"), std::string::npos);
-  const auto metrics = nlohmann::json::parse(read(out / "metrics.json"));
+  const auto metrics = nlohmann::json::parse(read_file(out / "metrics.json"));
   EXPECT_EQ(metrics["solver"], "fabrik");
   EXPECT_EQ(metrics["shape"], "star");
   EXPECT_EQ(metrics["targets"], 400);
@@ -47,8 +40,8 @@ TEST(IkCli, WritesMetricsPathAndDrawing) {
   for (const char* key : {"iterations", "error", "max_joint_step_rad", "solve_time_us"}) {
     EXPECT_TRUE(metrics.contains(key)) << key;
   }
-  EXPECT_EQ(count_lines(read(out / "path.csv")), 401);  // header + one row per frame
-  const std::string svg = read(out / "drawing.svg");
+  EXPECT_EQ(count_lines(read_file(out / "path.csv")), 401);  // header + one row per frame
+  const std::string svg = read_file(out / "drawing.svg");
   EXPECT_NE(svg.find("star"), std::string::npos);
   EXPECT_NE(svg.find("fabrik"), std::string::npos);
 }
@@ -57,7 +50,7 @@ TEST(IkCli, LapsMultiplyTheFrames) {
   const fs::path out = fresh_dir("laps");
   const auto r = run_command(kCli + " ik --shape square --laps 2 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(nlohmann::json::parse(read(out / "metrics.json"))["targets"], 300);
+  EXPECT_EQ(nlohmann::json::parse(read_file(out / "metrics.json"))["targets"], 300);
 }
 
 TEST(IkCli, SingleTargetPrintsTheResult) {
@@ -113,11 +106,10 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(IkCli, UnwritableOutputWritesNothing) {
   const fs::path dir = fresh_dir("blocked");
-  fs::create_directories(dir);
   std::ofstream(dir / "file") << "x";
   const auto r = run_command(kCli + " ik --out " + (dir / "file").string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(read(dir / "file"), "x");
+  EXPECT_EQ(read_file(dir / "file"), "x");
 }
 
 TEST(IkCli, HelpExplainsEveryOption) {
@@ -140,12 +132,12 @@ TEST(DemoCli, DrawsEveryShapeWithBothSolvers) {
   for (const char* shape : {"circle", "square", "heart", "triangle", "star"}) {
     for (const char* solver : {"ccd", "fabrik"}) {
       const fs::path dir = out / "ik" / (std::string(shape) + "-" + solver);
-      const auto metrics = nlohmann::json::parse(read(dir / "metrics.json"));
+      const auto metrics = nlohmann::json::parse(read_file(dir / "metrics.json"));
       EXPECT_EQ(metrics["converged_fraction"], 1.0) << dir;
       EXPECT_TRUE(fs::exists(dir / "drawing.svg"));
     }
   }
-  EXPECT_EQ(count_lines(read(out / "ik" / "summary.csv")), 11);
+  EXPECT_EQ(count_lines(read_file(out / "ik" / "summary.csv")), 11);
 }
 
 }  // namespace

@@ -6,30 +6,21 @@
 #include <fstream>
 #include <sstream>
 
+#include "../support/temp_files.h"
+
 namespace animkit {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string read(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing_support::fresh_dir;
+using testing_support::read_file;
 
 TEST(AtomicWrite, ReplacesTheFileWholeAndLeavesNoTemporary) {
   const fs::path dir = fresh_dir("atomic_write_replace");
   ASSERT_TRUE(write_file_atomic(dir / "a.txt", "first"));
   ASSERT_TRUE(write_file_atomic(dir / "a.txt", "second version"));
-  EXPECT_EQ(read(dir / "a.txt"), "second version");
+  EXPECT_EQ(read_file(dir / "a.txt"), "second version");
   EXPECT_FALSE(fs::exists(dir / "a.txt.tmp"));
 }
 
@@ -41,7 +32,7 @@ TEST(AtomicWrite, FailureNamesThePathAndKeepsTheOldFile) {
   const auto result = write_file_atomic(dir / "keep.txt", "new");
   ASSERT_FALSE(result);
   EXPECT_EQ(result.error().message.rfind("cannot write " + (dir / "keep.txt").string(), 0), 0u);
-  EXPECT_EQ(read(dir / "keep.txt"), "old");
+  EXPECT_EQ(read_file(dir / "keep.txt"), "old");
 }
 
 TEST(OutputDirectory, IsCreatedWithItsParents) {
