@@ -1,13 +1,14 @@
 # The two commands of the README:
 #   make demo   installs dependencies, builds (Release) and runs the built-in demo
 #   make test   installs dependencies, builds and runs every test, then again under ASan+UBSan
+#               (a Debug build, so assertions are checked too)
 JOBS   ?= $(shell nproc)
 OUT    ?= out/demo
 CMAKE  := cmake
 RELEASE_DIR  := build/release
 SANITIZE_DIR := build/sanitize
 
-.PHONY: deps build demo test test-release test-sanitize bench format clean
+.PHONY: deps build demo test test-release test-sanitize bench clean
 
 deps:
 	bash scripts/install-deps.sh
@@ -27,7 +28,7 @@ test-release: deps
 	cd $(RELEASE_DIR) && ctest --output-on-failure -j $(JOBS)
 
 test-sanitize: deps
-	$(CMAKE) -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANIMKIT_SANITIZE=ON \
+	$(CMAKE) -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=Debug -DANIMKIT_SANITIZE=ON \
 	  -DANIMKIT_BUILD_BENCHMARKS=OFF
 	$(CMAKE) --build $(SANITIZE_DIR) -j $(JOBS)
 	cd $(SANITIZE_DIR) && ctest --output-on-failure -j $(JOBS)
@@ -36,9 +37,6 @@ test: test-release test-sanitize
 
 bench: build
 	$(RELEASE_DIR)/bench/ik_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-
-format:
-	clang-format -i $$(git ls-files '*.h' '*.cpp')
 
 clean:
 	rm -rf build out

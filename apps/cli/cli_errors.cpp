@@ -1,8 +1,8 @@
 #include "cli_errors.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace animkit::cli {

@@ -35,27 +35,20 @@ std::string shape_names() {
   return names;
 }
 
-int solve_one_target(const Chain& chain, IkSolverKind solver, const IkOptions& options,
-                     const std::string& text) {
-  Vec3 target;
-  if (!parse_vec3(text, target)) {
-    return report_error("--target must be three finite numbers X,Y,Z, got '" + text + "'");
-  }
-  Pose pose = rest_pose(chain);
-  const auto result = solve_ik(solver, chain, pose, target, options);
-  if (!result) return report_error(result.error().message);
+void print_single_target(const Chain& chain, IkSolverKind solver, const DrawingRun& run) {
+  const DrawingFrame& frame = run.frames.front();
+  const IkResult& result = frame.ik;
   std::printf("solver       %s\n", std::string(to_string(solver)).c_str());
-  std::printf("target       %s\n", to_string(target).c_str());
-  std::printf("end effector %s\n", to_string(pose.end_effector()).c_str());
-  std::printf("iterations   %d\n", result->iterations);
-  std::printf("error        %.3e\n", result->error);
-  std::printf("converged    %s\n", result->converged ? "yes" : "no");
-  std::printf("reachable    %s%s\n", result->reachable ? "yes" : "no",
-              result->reachable ? "" : " (the arm points straight at the target)");
+  std::printf("target       %s\n", to_string(frame.target).c_str());
+  std::printf("end effector %s\n", to_string(frame.end_effector).c_str());
+  std::printf("iterations   %d\n", result.iterations);
+  std::printf("error        %.3e\n", result.error);
+  std::printf("converged    %s\n", result.converged ? "yes" : "no");
+  std::printf("reachable    %s%s\n", result.reachable ? "yes" : "no",
+              result.reachable ? "" : " (the arm points straight at the target)");
   for (int i = 0; i < chain.joint_count(); ++i) {
-    std::printf("joint %d      %s\n", i, to_string(pose.global_positions[i]).c_str());
+    std::printf("joint %d      %s\n", i, to_string(run.final_pose.global_positions[i]).c_str());
   }
-  return 0;
 }
 
 int run(const IkArgs& args) {
@@ -84,20 +77,35 @@ int run(const IkArgs& args) {
 
   const auto chain = build_chain(lab_arm());
   if (!chain) return report_error(chain.error().message);
-  if (!args.target.empty()) return solve_one_target(*chain, *solver, options.ik, args.target);
-
-  const auto run = run_drawing(*chain, lab_shape_targets(*shape), options);
+  // One target is a one-frame drawing from the rest pose: same solve, same reports.
+  std::vector<Vec3> targets;
+  IkRunLabel label{args.shape, args.solver};
+  if (args.target.empty()) {
+    targets = lab_shape_targets(*shape);
+  } else {
+    Vec3 target;
+    if (!parse_vec3(args.target, target)) {
+      return report_error("--target must be three finite numbers X,Y,Z, got '" + args.target + "'");
+    }
+    targets.push_back(target);
+    label.shape = "target";
+  }
+  const auto run = run_drawing(*chain, targets, options);
   if (!run) return report_error(run.error().message);
-  const IkRunLabel label{args.shape, args.solver};
   if (!args.out.empty()) {
     if (auto written = write_ik_reports(args.out, label, options, *run); !written) {
       return report_error(written.error().message);
     }
   }
-  print_ik_table_header();
-  print_ik_table_row(label.shape, label.solver, summarize(*run));
-  if (!args.out.empty())
+  if (args.target.empty()) {
+    print_ik_table_header();
+    print_ik_table_row(label.shape, label.solver, summarize(*run));
+  } else {
+    print_single_target(*chain, *solver, *run);
+  }
+  if (!args.out.empty()) {
     std::printf("wrote metrics.json, path.csv, drawing.svg to %s\n", args.out.c_str());
+  }
   return 0;
 }
 
@@ -109,23 +117,30 @@ std::function<int()> add_ik_command(CLI::App& app) {
       "ik",
       "The lab's arm draws a shape with inverse kinematics, one target per frame "
       "(warm-started from the previous frame), and reports what each solve did.");
-  ik->add_option("--shape", args->shape, "Shape to draw: " + shape_names())->capture_default_str();
+  CLI::Option* shape = ik->add_option("--shape", args->shape, "Shape to draw: " + shape_names())
+                           ->capture_default_str();
   ik->add_option("--solver", args->solver, "IK solver: ccd or fabrik")->capture_default_str();
   ik->add_option("--max-iterations", args->max_iterations, "Iteration cap per target (>= 1)")
       ->capture_default_str();
   ik->add_option("--tolerance", args->tolerance,
                  "Converged when |end effector - target| <= tolerance (> 0)")
       ->capture_default_str();
-  ik->add_option("--laps", args->laps, "Times the shape is drawn; the arm resets to rest each lap")
-      ->capture_default_str();
-  ik->add_flag("--cold-start", args->cold_start,
-               "Solve every target from the rest pose instead of the previous frame's pose");
+  CLI::Option* laps = ik->add_option("--laps", args->laps,
+                                     "Times the shape is drawn; the arm resets to rest each lap")
+                          ->capture_default_str();
+  CLI::Option* cold_start =
+      ik->add_flag("--cold-start", args->cold_start,
+                   "Solve every target from the rest pose instead of the previous frame's pose");
   ik->add_option("--fabrik-rotations", args->fabrik_rotations,
                  "How FABRIK recovers joint rotations: rest (the lab's, shortest arc from the rest "
                  "bone) or previous (smallest change from the last frame, no twist jumps)")
       ->capture_default_str();
   ik->add_option("--target", args->target,
-                 "Solve one target X,Y,Z from the rest pose, print the result and exit");
+                 "Solve one target X,Y,Z from the rest pose and print the result, instead of "
+                 "drawing a shape (--out then writes its one-frame reports)")
+      ->excludes(shape)
+      ->excludes(laps)
+      ->excludes(cold_start);
   ik->add_option("--out", args->out,
                  "Folder for metrics.json, path.csv and drawing.svg (created if needed)");
   return [args] { return run(*args); };

@@ -1,6 +1,7 @@
 // animkit: command-line front end. Each subcommand is a thin shell over library calls.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <exception>
 
 #include "cli_errors.h"
 #include "demo_command.h"
@@ -26,6 +27,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return animkit::cli::report_error(std::string(e.what()) + " (see animkit --help)");
   }
-  if (app.got_subcommand("ik")) return run_ik();
-  return run_demo();
+  try {
+    if (app.got_subcommand("ik")) return run_ik();
+    return run_demo();
+  } catch (const std::exception& e) {  // e.g. out of memory: still one line, never a crash
+    return animkit::cli::report_error(e.what());
+  }
 }

@@ -1,6 +1,7 @@
 #include "animkit/core/quaternion_math.h"
 
 #include <cmath>
+#include <limits>
 
 namespace animkit {
 
@@ -11,7 +12,9 @@ Quat shortest_arc(const Vec3& from, const Vec3& to) {
   // never collapses to identity before the directions really agree.
   const double norms = std::sqrt(from.squaredNorm() * to.squaredNorm());
   const double w = norms + from.dot(to);
-  if (w <= 1e-12 * norms) {
+  // w = |from||to| (1 + cos angle) is computed with an absolute rounding error of a few eps
+  // |from||to|; only below that are the directions indistinguishable from opposite.
+  if (w <= 4.0 * std::numeric_limits<double>::epsilon() * norms) {
     // Opposite directions: rotate by pi about an axis perpendicular to `from`.
     const Vec3 axis = perpendicular_axis(from);
     return Quat(0.0, axis.x(), axis.y(), axis.z());

@@ -88,6 +88,7 @@ Result<IkResult> solve_ccd(const Chain& chain, Pose& pose, const Vec3& target,
     const double previous_error2 = error2;
     error2 = (p[end] - target).squaredNorm();
     if (error2 > tolerance2 && error2 >= previous_error2 * kStall2) {
+      if (!detail::on_singular_line(chain, p, target)) break;  // rounding level: stop
       // Singular pose (see kStallRatio): swing the chain about the root off the line (a kick
       // at the last joints would be undone by the next sweep) and go on.
       std::fill(arcs.begin(), arcs.end(), Quat::Identity());
@@ -105,6 +106,7 @@ Result<IkResult> solve_ccd(const Chain& chain, Pose& pose, const Vec3& target,
   forward_kinematics(chain, pose, 0);
   result.error = (p[end] - target).norm();
   result.converged = result.error <= options.tolerance;
+  detail::prefer_straight_if_nearer(chain, pose, target, options, result);
   return result;
 }
 

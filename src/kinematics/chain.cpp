@@ -51,7 +51,7 @@ std::optional<Error> ChainDesc::validate() const {
     }
     if (std::abs(q.norm() - 1.0) > kUnitTolerance) {
       return Error{"joint " + std::to_string(i) + " rotation is not a unit quaternion (norm " +
-                   std::to_string(q.norm()) + ")"};
+                   format_number(q.norm()) + ")"};
     }
   }
   return std::nullopt;
@@ -67,25 +67,25 @@ Result<Chain> build_chain(const ChainDesc& desc) {
   if (auto error = desc.validate()) return fail(error->message);
   Chain chain;
   const std::size_t n = desc.local_offsets.size();
-  chain.local_offsets = desc.local_offsets;
-  chain.rest_rotations =
+  chain.local_offsets_ = desc.local_offsets;
+  chain.rest_rotations_ =
       desc.local_rotations.empty() ? std::vector<Quat>(n, Quat::Identity()) : desc.local_rotations;
-  for (Quat& q : chain.rest_rotations) q.normalize();  // remove the tolerated 1e-6 drift
-  chain.bone_lengths.assign(n, 0.0);
+  for (Quat& q : chain.rest_rotations_) q.normalize();  // remove the tolerated 1e-6 drift
+  chain.bone_lengths_.assign(n, 0.0);
   double longest = 0.0;
   for (std::size_t i = 1; i < n; ++i) {
-    chain.bone_lengths[i] = desc.local_offsets[i].norm();
-    chain.reach += chain.bone_lengths[i];
-    longest = std::max(longest, chain.bone_lengths[i]);
+    chain.bone_lengths_[i] = desc.local_offsets[i].norm();
+    chain.reach_ += chain.bone_lengths_[i];
+    longest = std::max(longest, chain.bone_lengths_[i]);
   }
   // A bone longer than all the others together leaves a ball around the root out of reach.
-  chain.min_reach = std::max(0.0, 2.0 * longest - chain.reach);
+  chain.min_reach_ = std::max(0.0, 2.0 * longest - chain.reach_);
   return chain;
 }
 
 Pose rest_pose(const Chain& chain) {
-  const std::size_t n = chain.local_offsets.size();
-  Pose pose{chain.rest_rotations, std::vector<Quat>(n, Quat::Identity()),
+  const std::size_t n = chain.local_offsets().size();
+  Pose pose{chain.rest_rotations(), std::vector<Quat>(n, Quat::Identity()),
             std::vector<Vec3>(n, Vec3::Zero())};
   forward_kinematics(chain, pose, 0);
   return pose;

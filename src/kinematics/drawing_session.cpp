@@ -42,6 +42,12 @@ Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets
                                const DrawingOptions& options) {
   if (auto error = options.validate()) return fail(error->message);
   if (targets.empty()) return fail("the trajectory has no targets");
+  const long long frames = static_cast<long long>(targets.size()) * options.laps;
+  if (frames > kMaxDrawingFrames) {
+    return fail(std::to_string(options.laps) + " laps of " + std::to_string(targets.size()) +
+                " targets make " + std::to_string(frames) + " frames, more than the limit of " +
+                std::to_string(kMaxDrawingFrames));
+  }
   for (std::size_t i = 0; i < targets.size(); ++i) {
     if (!is_finite(targets[i])) {
       return fail("target " + std::to_string(i) + " has a non-finite coordinate " +

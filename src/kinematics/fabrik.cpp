@@ -33,11 +33,13 @@ void backward_forward_pass(const Chain& chain, Pose& pose, const Vec3& target) {
   // The backward pass stops at joint 1: joint 0 would be moved only to be put back on the
   // root by the forward pass, which reads nothing of it.
   for (int i = end - 1; i >= 1; --i) {
-    reach_toward(p[i + 1], p[i], chain.bone_lengths[i + 1], g[i], chain.local_offsets[i + 1], -1.0);
+    reach_toward(p[i + 1], p[i], chain.bone_lengths()[i + 1], g[i], chain.local_offsets()[i + 1],
+                 -1.0);
   }
   p[0] = chain.root_position();
   for (int i = 0; i < end; ++i) {
-    reach_toward(p[i], p[i + 1], chain.bone_lengths[i + 1], g[i], chain.local_offsets[i + 1], 1.0);
+    reach_toward(p[i], p[i + 1], chain.bone_lengths()[i + 1], g[i], chain.local_offsets()[i + 1],
+                 1.0);
   }
 }
 
@@ -50,11 +52,11 @@ void recover_rotations(const Chain& chain, Pose& pose, FabrikRotations mode) {
     const Vec3 bone = p[i + 1] - p[i];
     Quat global;
     if (mode == FabrikRotations::from_rest) {
-      global = shortest_arc(chain.local_offsets[i + 1], bone);
+      global = shortest_arc(chain.local_offsets()[i + 1], bone);
     } else {
       // global_rotations still hold the pose the solve started from.
       const Quat& before = pose.global_rotations[i];
-      global = (shortest_arc(before * chain.local_offsets[i + 1], bone) * before).normalized();
+      global = (shortest_arc(before * chain.local_offsets()[i + 1], bone) * before).normalized();
     }
     // A product of unit quaternions, rebuilt from fresh arcs at every solve: no drift to undo.
     pose.local_rotations[i] = parent.conjugate() * global;
@@ -65,8 +67,8 @@ void recover_rotations(const Chain& chain, Pose& pose, FabrikRotations mode) {
 
 }  // namespace
 
-Result<IkResult> solve_fabrik(const Chain& chain, Pose& pose, const Vec3& target,
-                              const IkOptions& options) {
+Result<IkResult> fabrik_reaching_passes(const Chain& chain, Pose& pose, const Vec3& target,
+                                        const IkOptions& options) {
   if (auto settled = detail::settle_without_iterating(chain, pose, target, options)) {
     return *settled;
   }
@@ -82,18 +84,29 @@ Result<IkResult> solve_fabrik(const Chain& chain, Pose& pose, const Vec3& target
     ++result.iterations;
     const double previous_error2 = error2;
     error2 = (pose.end_effector() - target).squaredNorm();
+    auto& p = pose.global_positions;
     if (error2 > tolerance2 && error2 >= previous_error2 * kStall2) {
+      if (!detail::on_singular_line(chain, p, target)) break;  // rounding level: stop
       // Singular pose (see kStallRatio): swing the chain about the root off the line, so the
       // next backward pass bends it, and go on.
-      auto& p = pose.global_positions;
       const Quat kick = detail::stall_kick(chain, pose, target);
       for (std::size_t k = 1; k < p.size(); ++k) p[k] = p[0] + kick * (p[k] - p[0]);
       error2 = (pose.end_effector() - target).squaredNorm();
     }
   }
-  if (result.iterations > 0) recover_rotations(chain, pose, options.fabrik_rotations);
-  result.error = (pose.end_effector() - target).norm();
+  result.error = std::sqrt(error2);
   result.converged = result.error <= options.tolerance;
+  return result;
+}
+
+Result<IkResult> solve_fabrik(const Chain& chain, Pose& pose, const Vec3& target,
+                              const IkOptions& options) {
+  auto result = fabrik_reaching_passes(chain, pose, target, options);
+  if (!result || result->iterations == 0) return result;  // error, or nothing moved
+  recover_rotations(chain, pose, options.fabrik_rotations);
+  result->error = (pose.end_effector() - target).norm();
+  result->converged = result->error <= options.tolerance;
+  detail::prefer_straight_if_nearer(chain, pose, target, options, *result);
   return result;
 }
 

@@ -12,13 +12,13 @@ void forward_kinematics(const Chain& chain, Pose& pose, int start) {
   assert(start >= 0 && start < n);
   if (start == 0) {
     pose.global_rotations[0] = pose.local_rotations[0];
-    pose.global_positions[0] = chain.local_offsets[0];
+    pose.global_positions[0] = chain.local_offsets()[0];
     start = 1;
   }
   for (int i = start; i < n; ++i) {
     pose.global_rotations[i] = pose.global_rotations[i - 1] * pose.local_rotations[i];
     pose.global_positions[i] =
-        pose.global_positions[i - 1] + pose.global_rotations[i - 1] * chain.local_offsets[i];
+        pose.global_positions[i - 1] + pose.global_rotations[i - 1] * chain.local_offsets()[i];
   }
 }
 

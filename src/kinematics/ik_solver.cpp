@@ -1,6 +1,8 @@
 #include "animkit/kinematics/ik_solver.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 
 #include "animkit/core/quaternion_math.h"
@@ -16,7 +18,7 @@ std::optional<Error> IkOptions::validate() const {
   }
   // isfinite first: an ordered comparison with NaN raises FE_INVALID, which the tests trap.
   if (!std::isfinite(tolerance) || tolerance <= 0.0) {
-    return Error{"tolerance must be a positive finite number, got " + std::to_string(tolerance)};
+    return Error{"tolerance must be a positive finite number, got " + format_number(tolerance)};
   }
   return std::nullopt;
 }
@@ -68,7 +70,7 @@ std::optional<Error> validate_ik_input(const Chain& chain, const Pose& pose, con
   if (!is_finite(target)) {
     return Error{"target has a non-finite coordinate " + to_string(target)};
   }
-  const std::size_t n = chain.local_offsets.size();
+  const std::size_t n = chain.local_offsets().size();
   const auto mismatch = [n](std::size_t size, const char* what) {
     return Error{"pose has " + std::to_string(size) + " " + what + " but the chain has " +
                  std::to_string(n) + " joints"};
@@ -79,7 +81,27 @@ std::optional<Error> validate_ik_input(const Chain& chain, const Pose& pose, con
     return mismatch(pose.global_rotations.size(), "global rotations");
   if (pose.global_positions.size() != n)
     return mismatch(pose.global_positions.size(), "joint positions");
-  return options.validate();
+  // The pose is the warm start: a corrupted one would turn into NaN or stretched bones. This
+  // runs on every solve, so the common case is one pass of sums (NaN and inf propagate into
+  // them quietly), and only a failed check walks the joints again to name the culprit.
+  double finite_sum = 0.0, unit_deviation = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    unit_deviation += std::abs(pose.local_rotations[i].squaredNorm() - 1.0);
+    finite_sum += pose.global_positions[i].sum() + pose.global_rotations[i].coeffs().sum();
+  }
+  if (std::isfinite(finite_sum) && std::isfinite(unit_deviation) && unit_deviation <= 1e-6) {
+    return options.validate();
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const Quat& q = pose.local_rotations[i];
+    if (!is_finite(q) || std::abs(q.squaredNorm() - 1.0) > 1e-6) {
+      return Error{"pose joint " + std::to_string(i) + " rotation is not a finite unit quaternion"};
+    }
+    if (!is_finite(pose.global_positions[i]) || !is_finite(pose.global_rotations[i])) {
+      return Error{"pose joint " + std::to_string(i) + " has a non-finite position or rotation"};
+    }
+  }
+  return Error{"pose rotations are not unit quaternions"};  // deviations too small one by one
 }
 
 }  // namespace
@@ -88,7 +110,8 @@ std::optional<Result<IkResult>> settle_without_iterating(const Chain& chain, Pos
                                                          const Vec3& target,
                                                          const IkOptions& options) {
   if (auto error = validate_ik_input(chain, pose, target, options)) return fail(error->message);
-  if ((target - chain.root_position()).squaredNorm() > chain.reach * chain.reach) {
+  const double straight = std::max(chain.reach() - options.tolerance, 0.0);
+  if ((target - chain.root_position()).squaredNorm() >= straight * straight) {
     return point_chain_at(chain, pose, target, options);
   }
   return std::nullopt;
@@ -96,7 +119,32 @@ std::optional<Result<IkResult>> settle_without_iterating(const Chain& chain, Pos
 
 bool within_reach(const Chain& chain, const Vec3& target) {
   const double distance2 = (target - chain.root_position()).squaredNorm();
-  return distance2 <= chain.reach * chain.reach && distance2 >= chain.min_reach * chain.min_reach;
+  return distance2 <= chain.reach() * chain.reach() &&
+         distance2 >= chain.min_reach() * chain.min_reach();
+}
+
+bool on_singular_line(const Chain& chain, const std::vector<Vec3>& positions, const Vec3& target) {
+  const Vec3& root = chain.root_position();
+  Vec3 line = target - root;
+  if (line.squaredNorm() == 0.0) line = positions.back() - root;
+  if (line.squaredNorm() == 0.0) return true;
+  line.normalize();
+  const double slack = 1e-9 * chain.reach();
+  for (const Vec3& p : positions) {
+    if ((p - root).cross(line).squaredNorm() > slack * slack) return false;
+  }
+  return true;
+}
+
+void prefer_straight_if_nearer(const Chain& chain, Pose& pose, const Vec3& target,
+                               const IkOptions& options, IkResult& result) {
+  if (result.converged) return;
+  // The straight chain ends at full reach on the ray from the root through the target.
+  const double straight_error = std::abs((target - chain.root_position()).norm() - chain.reach());
+  if (straight_error >= result.error) return;
+  const int iterations = result.iterations;
+  result = point_chain_at(chain, pose, target, options);
+  result.iterations = iterations;
 }
 
 Quat stall_kick(const Chain& chain, const Pose& pose, const Vec3& target) {
@@ -114,7 +162,7 @@ IkResult point_chain_at(const Chain& chain, Pose& pose, const Vec3& target,
   // Every bone along `direction`: global_rotation[i] maps bone i+1's rest offset onto it.
   Quat parent = Quat::Identity();
   for (int i = 0; i + 1 < n; ++i) {
-    const Quat global = shortest_arc(chain.local_offsets[i + 1], direction);
+    const Quat global = shortest_arc(chain.local_offsets()[i + 1], direction);
     pose.local_rotations[i] = (parent.conjugate() * global).normalized();
     parent = global;
   }

@@ -60,6 +60,16 @@ TEST(IkCli, SingleTargetPrintsTheResult) {
   EXPECT_NE(r.out.find("reachable    yes"), std::string::npos);
 }
 
+TEST(IkCli, SingleTargetWritesOneFrameReports) {
+  const fs::path out = fresh_dir("single");
+  const auto r = run_command(kCli + " ik --solver fabrik --target 0.5,0,0.3 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto metrics = nlohmann::json::parse(read_file(out / "metrics.json"));
+  EXPECT_EQ(metrics["targets"], 1);
+  EXPECT_EQ(metrics["shape"], "target");
+  EXPECT_EQ(count_lines(read_file(out / "path.csv")), 2);
+}
+
 TEST(IkCli, UnreachableTargetIsReported) {
   const auto r = run_command(kCli + " ik --solver fabrik --target 3,0,0");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -96,6 +106,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInvocation{"ik --tolerance abc", "Could not convert"},
         BadInvocation{"ik --max-iterations 0", "max iterations must be at least 1"},
         BadInvocation{"ik --laps 0", "laps must be at least 1"},
+        BadInvocation{"ik --laps 2000000000", "2000000000 laps of 150 targets make"},
+        BadInvocation{"ik --target 1,0,0 --shape star", "--shape excludes --target"},
         BadInvocation{"ik --target 1,2", "--target must be three finite numbers"},
         BadInvocation{"ik --target nan,0,0", "--target must be three finite numbers"},
         BadInvocation{"ik --target 1,2,3,4", "--target must be three finite numbers"},

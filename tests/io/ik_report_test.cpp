@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "../support/temp_files.h"
 #include "animkit/trajectory/lab_shapes.h"
 
 namespace animkit {
@@ -75,8 +76,7 @@ TEST_F(IkReport, SvgDrawsGreenTargetsAndARedPathWithATitle) {
 }
 
 TEST_F(IkReport, WritesAllThreeFiles) {
-  const auto dir = std::filesystem::path(testing::TempDir()) / "ik_report_test";
-  std::filesystem::remove_all(dir);
+  const auto dir = testing_support::fresh_dir("ik_report_test");
   ASSERT_TRUE(write_ik_reports(dir / "nested", label, options, run));
   for (const char* name : {"metrics.json", "path.csv", "drawing.svg"}) {
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / "nested" / name)) << name;

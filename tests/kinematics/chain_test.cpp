@@ -17,9 +17,9 @@ TEST(Chain, LabArmHasTheLabsBonesAndReach) {
   ASSERT_TRUE(chain);
   ASSERT_EQ(chain->joint_count(), 5);
   const double lengths[] = {0.0, 0.8, 0.4, 0.2, 1.2};
-  for (int i = 0; i < 5; ++i) EXPECT_NEAR(chain->bone_lengths[i], lengths[i], 1e-15);
-  EXPECT_NEAR(chain->reach, 2.6, 1e-15);
-  EXPECT_EQ(chain->min_reach,
+  for (int i = 0; i < 5; ++i) EXPECT_NEAR(chain->bone_lengths()[i], lengths[i], 1e-15);
+  EXPECT_NEAR(chain->reach(), 2.6, 1e-15);
+  EXPECT_EQ(chain->min_reach(),
             0.0);  // 1.2 < 0.8 + 0.4 + 0.2: every point near the root is reachable
   EXPECT_EQ(chain->root_position(), Vec3(0.0, 1.7, 0.0));
 }
@@ -28,7 +28,7 @@ TEST(Chain, MinReachWhenOneBoneIsLongerThanTheRest) {
   const Vec3 rest[] = {{0, 0, 0}, {3, 0, 0}, {4, 0, 0}};
   const auto chain = build_chain(ChainDesc::from_rest_positions(rest));
   ASSERT_TRUE(chain);
-  EXPECT_NEAR(chain->min_reach, 2.0, 1e-15);
+  EXPECT_NEAR(chain->min_reach(), 2.0, 1e-15);
 }
 
 TEST(Chain, RejectsFewerThanTwoJoints) {
@@ -55,7 +55,7 @@ TEST(Chain, RejectsNonUnitRotation) {
   ChainDesc desc = lab_arm();
   desc.local_rotations.assign(5, Quat::Identity());
   desc.local_rotations[1] = Quat(0.9, 0.0, 0.0, 0.0);
-  EXPECT_EQ(build_error(desc), "joint 1 rotation is not a unit quaternion (norm 0.900000)");
+  EXPECT_EQ(build_error(desc), "joint 1 rotation is not a unit quaternion (norm 0.9)");
 }
 
 TEST(Chain, RejectsRotationCountMismatch) {

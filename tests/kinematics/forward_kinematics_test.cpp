@@ -52,6 +52,19 @@ TEST_F(ForwardKinematics, RotationsComposeDownTheChain) {
               1e-14);
 }
 
+TEST_F(ForwardKinematics, ParentRotationActsAfterChildRotation) {
+  // Joint 1 turned +90 about z, joint 2 +90 about x: global[2] = global[1] * local[2], so the
+  // child's x-turn applies to bone 3 first and the parent's z-turn after it.
+  pose.local_rotations[1] = about(Vec3::UnitZ(), kHalfPi);
+  pose.local_rotations[2] = about(Vec3::UnitX(), kHalfPi);
+  forward_kinematics(chain, pose, 0);
+  expect_near(pose.global_positions[2], {0.4, 0.9, 0.0});
+  // (0,-0.2,0): about x -> (0,0,-0.2); about z -> (0,0,-0.2). The reversed order would give
+  // (0.2,0,0) and put joint 3 at (0.6, 0.9, 0).
+  expect_near(pose.global_positions[3], {0.4, 0.9, -0.2});
+  expect_near(pose.global_positions[4], {0.4, 0.9, -1.4});
+}
+
 TEST_F(ForwardKinematics, OrderOfRotationsMatters) {
   // q_next = q2 * q1: rotate by q1 first, then q2. Root: x then y quarter turns.
   const Quat q1 = about(Vec3::UnitX(), kHalfPi), q2 = about(Vec3::UnitY(), kHalfPi);

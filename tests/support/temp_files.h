@@ -1,6 +1,7 @@
 #pragma once
 // Small file helpers shared by the tests that write and read real files.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -9,9 +10,11 @@
 
 namespace animkit::testing_support {
 
-/// An empty folder `name` under the test temporary directory (created, emptied first).
+/// An empty folder `name` under the test temporary directory (created, emptied first). The
+/// process id in its path keeps concurrent test runs (release and sanitizer) apart.
 inline std::filesystem::path fresh_dir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / name;
+  const std::filesystem::path dir =
+      std::filesystem::path(testing::TempDir()) / ("animkit_" + std::to_string(::getpid())) / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

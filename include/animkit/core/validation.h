@@ -1,6 +1,7 @@
 #pragma once
 // Helpers for validating user input at the API boundary.
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 
@@ -15,6 +16,14 @@ inline bool is_finite(const Vec3& v) {
 inline bool is_finite(const Quat& q) {
   return std::isfinite(q.w()) && std::isfinite(q.x()) && std::isfinite(q.y()) &&
          std::isfinite(q.z());
+}
+
+/// A number as users write it, for error messages: "1e-09", "0.2", "nan" (%g, unlike
+/// std::to_string, which prints 1e-9 as "0.000000").
+inline std::string format_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
 }
 
 /// "(0, 1.7, 0)": a vector as users write it, for error messages.

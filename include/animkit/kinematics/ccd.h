@@ -7,7 +7,8 @@ namespace animkit {
 
 /// Cyclic coordinate descent (SPEC.md section 2). One iteration visits the joints from the one
 /// nearest the end effector back to the root; each turns by the shortest arc taking
-/// (joint -> end effector) onto (joint -> target), and forward kinematics is re-run from it.
+/// (joint -> end effector) onto (joint -> target), as if forward kinematics were re-run from
+/// it (the sweep carries only what later joints read; see ccd.cpp).
 /// Starts from `pose` (warm start) and leaves the solution in it. The pose must be up to date,
 /// i.e. as rest_pose(), forward_kinematics() or any solver leaves it (solvers do not re-run
 /// FK first: it would cost a fifth of a warm-started FABRIK solve). Targets beyond the chain's

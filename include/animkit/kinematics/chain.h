@@ -31,16 +31,28 @@ struct ChainDesc {
 /// (0,-0.9,0); bones 0.8, 0.4, 0.2, 1.2 (reach 2.6) hanging from a root at height 1.7.
 ChainDesc lab_arm();
 
-/// Immutable runtime model of a validated chain; build it with build_chain().
-struct Chain {
-  std::vector<Vec3> local_offsets;   ///< as in ChainDesc (parent frame, scene units)
-  std::vector<double> bone_lengths;  ///< |local_offsets[i]|; bone_lengths[0] = 0 (the root)
-  std::vector<Quat> rest_rotations;  ///< local rotations at rest, one per joint
-  double reach = 0.0;      ///< sum of bone lengths: farthest the end effector gets from the root
-  double min_reach = 0.0;  ///< nearest it gets: max(0, 2 * longest bone - reach)
+/// Immutable runtime model of a validated chain; only build_chain() makes one, so every Chain
+/// satisfies ChainDesc::validate().
+class Chain {
+ public:
+  const std::vector<Vec3>& local_offsets() const { return local_offsets_; }  ///< as in ChainDesc
+  /// |local_offsets[i]|: the bone from joint i-1 to joint i; bone_lengths[0] = 0 (the root).
+  const std::vector<double>& bone_lengths() const { return bone_lengths_; }
+  const std::vector<Quat>& rest_rotations() const { return rest_rotations_; }  ///< unit, per joint
+  /// Sum of bone lengths: the farthest the end effector gets from the root.
+  double reach() const { return reach_; }
+  /// The nearest it gets: max(0, 2 * longest bone - reach).
+  double min_reach() const { return min_reach_; }
+  int joint_count() const { return static_cast<int>(local_offsets_.size()); }
+  const Vec3& root_position() const { return local_offsets_[0]; }
 
-  int joint_count() const { return static_cast<int>(local_offsets.size()); }
-  const Vec3& root_position() const { return local_offsets[0]; }
+ private:
+  friend Result<Chain> build_chain(const ChainDesc& desc);
+  std::vector<Vec3> local_offsets_;
+  std::vector<double> bone_lengths_;
+  std::vector<Quat> rest_rotations_;
+  double reach_ = 0.0;
+  double min_reach_ = 0.0;
 };
 
 /// Validates `desc` and builds the model; the error names the first problem found.

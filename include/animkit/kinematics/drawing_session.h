@@ -37,7 +37,11 @@ struct DrawingRun {
   Pose final_pose;
 };
 
-/// Runs the session. Errors: empty target list, a NaN/inf target (naming its index), bad options.
+/// Most frames a session runs (laps x targets): each frame keeps its pose for drawing.
+constexpr long long kMaxDrawingFrames = 10'000'000;
+
+/// Runs the session. Errors: empty target list, a NaN/inf target (naming its index), bad
+/// options, more than kMaxDrawingFrames frames.
 Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets,
                                const DrawingOptions& options = {});
 

@@ -13,4 +13,10 @@ namespace animkit {
 Result<IkResult> solve_fabrik(const Chain& chain, Pose& pose, const Vec3& target,
                               const IkOptions& options = {});
 
+/// FABRIK's reaching passes alone: the joint positions they find are left in
+/// pose.global_positions while the rotations are untouched, so the pose is not consistent
+/// until solve_fabrik() recovers them. For tests and for showing what the passes do.
+Result<IkResult> fabrik_reaching_passes(const Chain& chain, Pose& pose, const Vec3& target,
+                                        const IkOptions& options = {});
+
 }  // namespace animkit
