@@ -1,0 +1,81 @@
+#pragma once
+// Mass-spring cloth (SPEC.md section 4): an editable description, the immutable model built
+// from it once, and the state (positions, velocities) that integrators advance.
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "animkit/core/result.h"
+#include "animkit/core/types.h"
+
+namespace animkit {
+
+struct ParticleDesc {
+  Vec3 position = Vec3::Zero();  ///< world space, scene units
+  Vec3 velocity = Vec3::Zero();  ///< world space, units per second
+  double mass = 1.0;             ///< > 0; the lab's slider range is 0.5..10
+  bool pinned = false;           ///< pinned particles never move
+};
+
+struct SpringDesc {
+  int a = 0, b = 0;           ///< particle indices, distinct
+  double rest_length = -1.0;  ///< > 0, or negative: the distance of a and b in the description
+  double stiffness = 100.0;   ///< k > 0 (force per unit length); lab range 10..300, default 100
+};
+
+/// Editable description of a cloth.
+struct ClothDesc {
+  std::vector<ParticleDesc> particles;
+  std::vector<SpringDesc> springs;
+  /// Surface triangles over the particles, for drawing and OBJ export only (the physics is
+  /// the springs). May be empty.
+  std::vector<std::array<int, 3>> triangles;
+  double gravity = 0.3;  ///< acceleration along -y (units/s^2); lab range 0.1..1, default 0.3
+  /// Spring dashpot coefficient c: each spring also pulls with c (v_b - v_a).u along its axis u
+  /// (the lab's damping). >= 0; lab range 0.1..10, default 0.2.
+  double damping = 0.2;
+
+  /// The first problem with this description, or nothing when it can be built.
+  std::optional<Error> validate() const;
+};
+
+/// Immutable runtime model: flat arrays, rest lengths resolved.
+struct ClothModel {
+  std::vector<double> mass;  ///< per particle
+  std::vector<char> pinned;  ///< per particle, 0 or 1
+  std::vector<std::array<int, 2>> springs;
+  std::vector<double> rest_length;  ///< per spring
+  std::vector<double> stiffness;    ///< per spring
+  std::vector<std::array<int, 3>> triangles;
+  double gravity = 0.3;
+  double damping = 0.2;
+
+  int particle_count() const { return static_cast<int>(mass.size()); }
+  int spring_count() const { return static_cast<int>(springs.size()); }
+};
+
+/// Positions and velocities of every particle, 3 doubles each, particle-major
+/// (x0 y0 z0 x1 y1 z1 ...), the layout the solvers' vectors use.
+struct ClothState {
+  Eigen::VectorXd positions;
+  Eigen::VectorXd velocities;
+
+  Vec3 position(int i) const { return positions.segment<3>(3 * i); }
+  Vec3 velocity(int i) const { return velocities.segment<3>(3 * i); }
+};
+
+/// Validates `desc` and builds the model and its initial state.
+struct BuiltCloth {
+  ClothModel model;
+  ClothState state;
+};
+Result<BuiltCloth> build_cloth(const ClothDesc& desc);
+
+/// Energies of a state: kinetic 1/2 sum m v^2, elastic sum 1/2 k (l - L)^2 and gravitational
+/// sum m g y; `total` is their sum. Damping removes total energy over time.
+struct ClothEnergy {
+  double kinetic = 0.0, elastic = 0.0, gravitational = 0.0, total = 0.0;
+};
+ClothEnergy cloth_energy(const ClothModel& model, const ClothState& state);
+
+}  // namespace animkit

@@ -1,0 +1,26 @@
+#pragma once
+// Explicit (symplectic) Euler, the lab's starting point (SPEC.md section 4): per substep of
+// length h, v += h a(x, v), then x += h v. The lab runs 1000 substeps per frame to stay stable.
+#include <Eigen/Core>
+
+#include "animkit/cloth/cloth_model.h"
+
+namespace animkit {
+
+/// Spring, dashpot and gravity forces on every particle at (x, v), into `forces` (3N).
+void cloth_forces(const ClothModel& model, const Eigen::VectorXd& positions,
+                  const Eigen::VectorXd& velocities, Eigen::VectorXd& forces);
+
+class ExplicitEuler {
+ public:
+  explicit ExplicitEuler(const ClothModel& model);
+
+  /// `substeps` substeps of h / substeps each, from `state` into `state`.
+  void step(ClothState& state, double h, int substeps);
+
+ private:
+  const ClothModel& model_;
+  Eigen::VectorXd forces_;
+};
+
+}  // namespace animkit

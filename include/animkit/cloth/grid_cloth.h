@@ -1,0 +1,31 @@
+#pragma once
+// The lab's cloth and any n x n grid like it.
+#include "animkit/cloth/cloth_model.h"
+
+namespace animkit {
+
+/// An (n+1) x (n+1) grid of particles in the plane y = height, spanning `size` along x and z:
+/// particle (i, j) at (i * size / n, height, j * size / n - size / 2). Springs join each
+/// particle to its neighbours at distance 1 and 2 along both grid axes and at distance 1 along
+/// both diagonals; the two corners of the edge i = 0 are pinned. Defaults: the lab's cloth
+/// (11 x 11 particles, spacing 0.2, y = 1.5, mass 1, stiffness 100, damping 0.2, gravity 0.3).
+struct GridClothOptions {
+  int cells = 10;       ///< n >= 1: cells per side, n + 1 particles per side
+  double size = 2.0;    ///< side length (scene units); spacing = size / cells
+  double height = 1.5;  ///< y of the plane
+  double mass = 1.0;    ///< per particle, > 0
+  double stiffness = 100.0;
+  double damping = 0.2;
+  double gravity = 0.3;
+};
+
+/// The grid's description; triangles split each cell along its (i,j)-(i+1,j+1) diagonal.
+/// Invalid options (cells < 1, non-positive size, ...) are reported by validate()/build_cloth().
+ClothDesc make_grid_cloth(const GridClothOptions& options = {});
+
+/// Index of particle (i, j) in a grid of `cells` cells per side.
+inline int grid_index(int cells, int i, int j) {
+  return i * (cells + 1) + j;
+}
+
+}  // namespace animkit

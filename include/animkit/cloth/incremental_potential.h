@@ -1,0 +1,52 @@
+#pragma once
+// Implicit Euler as energy minimization (SPEC.md section 4). With h the step, M the masses,
+// x_n, v_n the state at the step's start and f_ext = M g the gravity:
+//   y    = x_n + h v_n + h^2 M^-1 f_ext
+//   g(x) = 1/(2h^2) |x - y|_M^2 + E(x) + D(x)
+//   grad g = M (x - y) / h^2 + grad E(x) + grad D(x),   Hessian = M / h^2 + H(x) + D / h
+// E is the springs' elastic energy. D adds the lab's spring dashpots (force -c ((v_a - v_b).u) u
+// on a) implicitly: with v = (x - x_n) / h and each axis u frozen at x_n,
+//   D(x) = c / (2h) sum_springs ((dx_a - dx_b) . u)^2,   dx = x - x_n,
+// a convex quadratic, so the step stays stable (and dissipative) at any h. Pinned particles are
+// not unknowns: their gradient entries are zero and they stay at x_n.
+#include <Eigen/Core>
+#include <vector>
+
+#include "animkit/cloth/cloth_model.h"
+#include "animkit/cloth/hessian_pattern.h"
+
+namespace animkit {
+
+class IncrementalPotential {
+ public:
+  /// Sizes the workspace for `model` (kept by reference: it must outlive this object).
+  explicit IncrementalPotential(const ClothModel& model);
+
+  /// Sets up the step from `state` over time h > 0: y, x_n and the damping axes.
+  void prepare(const ClothState& state, double h);
+
+  /// The predicted positions y, where Newton starts (pinned particles: x_n).
+  const Eigen::VectorXd& predicted() const { return y_; }
+
+  /// g(x).
+  double value(const Eigen::VectorXd& x) const;
+  /// g(x + step) - g(x), computed term by term in forms free of cancellation (e.g.
+  /// |a + s|^2 - |a|^2 = s.(2a + s)), so it resolves decreases far below the rounding error of
+  /// g itself. The line search compares this, not two values of g: near the solution Newton's
+  /// decreases are smaller than g's last bits, and comparing values would stall there.
+  double difference(const Eigen::VectorXd& x, const Eigen::VectorXd& step) const;
+  /// grad g(x) into `gradient` (sized 3N; pinned entries zero).
+  void gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const;
+  /// The Hessian of g at x, written into `pattern.matrix`'s values. `projected` keeps each
+  /// spring block positive semidefinite (see spring_energy.h), so the matrix is SPD; the exact
+  /// one may be indefinite where springs are compressed.
+  void hessian(const Eigen::VectorXd& x, HessianPattern& pattern, bool projected) const;
+
+ private:
+  const ClothModel& model_;
+  double h_ = 0.0;
+  Eigen::VectorXd y_, x_start_;
+  std::vector<Vec3> damping_axis_;  // per spring: unit axis at x_n (zero if degenerate)
+};
+
+}  // namespace animkit

@@ -1,0 +1,38 @@
+#pragma once
+// What one cloth step did: the numbers the CLI writes, the viewer plots and tests check.
+#include <vector>
+
+namespace animkit {
+
+/// One Newton iteration of an implicit step (recorded when ImplicitOptions::record_iterations).
+struct NewtonIterationRecord {
+  double objective = 0.0;      ///< g(x_k)
+  double decrease = 0.0;       ///< g(x_k + alpha dx) - g(x_k) at the accepted step
+  double gradient_norm = 0.0;  ///< |grad g(x_k)|
+  double slope = 0.0;          ///< grad g(x_k) . dx (negative for a descent direction)
+  double alpha = 0.0;          ///< accepted step length
+  int line_search_steps = 0;   ///< backtracking reductions before acceptance
+  int linear_iterations = 0;   ///< PCG iterations of this iteration's solve(s) (0: direct)
+  bool projected = false;      ///< solved with the projected Hessian (see HessianProjection)
+};
+
+struct StepReport {
+  int substeps = 1;
+  int newton_iterations = 0;         ///< summed over substeps (0 for explicit Euler)
+  int line_search_steps = 0;         ///< backtracking reductions, summed
+  int linear_iterations = 0;         ///< PCG iterations, summed (0 for a direct solve)
+  int projected_iterations = 0;      ///< Newton iterations that needed the projected Hessian
+  double gradient_norm_start = 0.0;  ///< |grad g| at x = y (first substep)
+  double gradient_norm_end = 0.0;    ///< |grad g| at the accepted x (last substep)
+  /// The |grad g| Newton stopped at: tolerance x the start, or the rounding floor when higher.
+  double gradient_tolerance = 0.0;
+  bool converged = true;  ///< every substep reached its gradient tolerance
+  double energy = 0.0;    ///< total mechanical energy after the step (cloth_energy().total)
+  double ms = 0.0;        ///< wall time of the whole step
+  /// Time per stage (ms, summed over substeps): gradient and objective evaluations, Hessian
+  /// assembly, linear solves, line search.
+  double ms_gradient = 0.0, ms_hessian = 0.0, ms_linear_solve = 0.0, ms_line_search = 0.0;
+  std::vector<NewtonIterationRecord> iterations;  ///< empty unless recording was asked for
+};
+
+}  // namespace animkit

@@ -1,0 +1,112 @@
+#include "animkit/cloth/cloth_model.h"
+
+#include <cmath>
+#include <string>
+
+#include "animkit/cloth/spring_energy.h"
+#include "animkit/core/validation.h"
+
+namespace animkit {
+
+namespace {
+std::string particle(std::size_t i) {
+  return "particle " + std::to_string(i);
+}
+std::string spring(std::size_t i) {
+  return "spring " + std::to_string(i);
+}
+bool finite_positive(double v) {
+  return std::isfinite(v) && v > 0.0;
+}
+}  // namespace
+
+std::optional<Error> ClothDesc::validate() const {
+  if (particles.empty()) return Error{"the cloth has no particles"};
+  if (!std::isfinite(gravity)) return Error{"gravity must be finite"};
+  if (!std::isfinite(damping) || damping < 0.0) {
+    return Error{"damping must be a finite number >= 0, got " + format_number(damping)};
+  }
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const ParticleDesc& p = particles[i];
+    if (!is_finite(p.position)) return Error{particle(i) + " has a non-finite position"};
+    if (!is_finite(p.velocity)) return Error{particle(i) + " has a non-finite velocity"};
+    if (!finite_positive(p.mass)) {
+      return Error{particle(i) + " mass must be positive and finite, got " + format_number(p.mass)};
+    }
+  }
+  const int n = static_cast<int>(particles.size());
+  for (std::size_t s = 0; s < springs.size(); ++s) {
+    const SpringDesc& sp = springs[s];
+    if (sp.a < 0 || sp.a >= n || sp.b < 0 || sp.b >= n) {
+      return Error{spring(s) + " joins particles " + std::to_string(sp.a) + " and " +
+                   std::to_string(sp.b) + ", but there are " + std::to_string(n)};
+    }
+    if (sp.a == sp.b) {
+      return Error{spring(s) + " joins particle " + std::to_string(sp.a) + " to itself"};
+    }
+    if (!finite_positive(sp.stiffness)) {
+      return Error{spring(s) + " stiffness must be positive and finite, got " +
+                   format_number(sp.stiffness)};
+    }
+    const double length = sp.rest_length >= 0.0
+                              ? sp.rest_length
+                              : (particles[sp.a].position - particles[sp.b].position).norm();
+    if (!finite_positive(length)) {
+      return Error{spring(s) + " has zero rest length"};
+    }
+  }
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for (int v : triangles[t]) {
+      if (v < 0 || v >= n)
+        return Error{"triangle " + std::to_string(t) + " has no particle " + std::to_string(v)};
+    }
+  }
+  return std::nullopt;
+}
+
+Result<BuiltCloth> build_cloth(const ClothDesc& desc) {
+  if (auto error = desc.validate()) return fail(error->message);
+  BuiltCloth built;
+  ClothModel& m = built.model;
+  const std::size_t n = desc.particles.size();
+  built.state.positions.resize(3 * static_cast<Eigen::Index>(n));
+  built.state.velocities.resize(3 * static_cast<Eigen::Index>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const ParticleDesc& p = desc.particles[i];
+    m.mass.push_back(p.mass);
+    m.pinned.push_back(p.pinned ? 1 : 0);
+    built.state.positions.segment<3>(3 * static_cast<Eigen::Index>(i)) = p.position;
+    // A pinned particle never moves, whatever velocity it was described with.
+    built.state.velocities.segment<3>(3 * static_cast<Eigen::Index>(i)) =
+        p.pinned ? Vec3::Zero() : p.velocity;
+  }
+  for (const SpringDesc& s : desc.springs) {
+    m.springs.push_back({s.a, s.b});
+    m.rest_length.push_back(
+        s.rest_length >= 0.0
+            ? s.rest_length
+            : (desc.particles[s.a].position - desc.particles[s.b].position).norm());
+    m.stiffness.push_back(s.stiffness);
+  }
+  m.triangles = desc.triangles;
+  m.gravity = desc.gravity;
+  m.damping = desc.damping;
+  return built;
+}
+
+ClothEnergy cloth_energy(const ClothModel& model, const ClothState& state) {
+  ClothEnergy e;
+  for (int i = 0; i < model.particle_count(); ++i) {
+    e.kinetic += 0.5 * model.mass[i] * state.velocity(i).squaredNorm();
+    e.gravitational += model.mass[i] * model.gravity * state.positions[3 * i + 1];
+  }
+  for (int s = 0; s < model.spring_count(); ++s) {
+    const auto [a, b] = model.springs[s];
+    e.elastic += spring_energy(state.position(a), state.position(b), model.stiffness[s],
+                               model.rest_length[s]);
+  }
+  e.total = e.kinetic + e.elastic + e.gravitational;
+  return e;
+}
+
+}  // namespace animkit

@@ -1,0 +1,156 @@
+#include "animkit/cloth/cloth_simulator.h"
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "animkit/cloth/explicit_euler.h"
+#include "animkit/core/validation.h"
+
+namespace animkit {
+
+std::string_view to_string(IntegratorKind kind) {
+  switch (kind) {
+    case IntegratorKind::explicit_euler:
+      return "explicit";
+    case IntegratorKind::implicit_direct:
+      return "implicit-direct";
+    case IntegratorKind::implicit_pcg:
+      return "implicit-pcg";
+  }
+  return "unknown";
+}
+
+std::span<const IntegratorKind> all_integrators() {
+  static constexpr std::array kinds{IntegratorKind::explicit_euler, IntegratorKind::implicit_direct,
+                                    IntegratorKind::implicit_pcg};
+  return kinds;
+}
+
+std::optional<IntegratorKind> parse_integrator(std::string_view name) {
+  for (IntegratorKind kind : all_integrators()) {
+    if (name == to_string(kind)) return kind;
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> SimulationOptions::validate() const {
+  if (substeps < 0)
+    return Error{"substeps must be at least 1 (or 0 for the default), got " +
+                 std::to_string(substeps)};
+  return implicit.validate();
+}
+
+int SimulationOptions::effective_substeps() const {
+  if (substeps > 0) return substeps;
+  return integrator == IntegratorKind::explicit_euler ? 1000 : 1;
+}
+
+struct ClothSimulator::Impl {
+  ClothModel model;
+  ClothState state;
+  ClothState backup;  // the state before the current step, to undo a diverged one
+  SimulationOptions options;
+  std::optional<ExplicitEuler> explicit_euler;
+  std::optional<ImplicitEuler> implicit_euler;
+  int steps = 0;
+};
+
+ClothSimulator::ClothSimulator(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+ClothSimulator::ClothSimulator(ClothSimulator&&) noexcept = default;
+ClothSimulator& ClothSimulator::operator=(ClothSimulator&&) noexcept = default;
+ClothSimulator::~ClothSimulator() = default;
+
+const ClothModel& ClothSimulator::model() const {
+  return impl_->model;
+}
+const ClothState& ClothSimulator::state() const {
+  return impl_->state;
+}
+const SimulationOptions& ClothSimulator::options() const {
+  return impl_->options;
+}
+int ClothSimulator::steps_taken() const {
+  return impl_->steps;
+}
+
+Result<ClothSimulator> ClothSimulator::create(const ClothDesc& desc,
+                                              const SimulationOptions& options) {
+  if (auto error = options.validate()) return fail(error->message);
+  auto built = build_cloth(desc);
+  if (!built) return fail(built.error().message);
+  // The integrators keep a reference to the model: it lives in the heap-allocated Impl, so
+  // its address survives moves of the simulator.
+  auto impl = std::make_unique<Impl>();
+  impl->model = std::move(built->model);
+  impl->state = std::move(built->state);
+  impl->backup = impl->state;
+  impl->options = options;
+  if (options.integrator == IntegratorKind::explicit_euler) {
+    impl->explicit_euler.emplace(impl->model);
+  } else {
+    ImplicitOptions implicit = options.implicit;
+    implicit.linear_solver = options.integrator == IntegratorKind::implicit_direct
+                                 ? LinearSolverKind::direct
+                                 : LinearSolverKind::pcg;
+    impl->implicit_euler.emplace(impl->model, implicit);
+  }
+  return ClothSimulator(std::move(impl));
+}
+
+namespace {
+
+// The first particle whose position or velocity is non-finite or beyond kExplodedMagnitude.
+std::optional<std::string> divergence(const ClothState& state) {
+  const auto bad = [](const Vec3& v) {
+    return !is_finite(v) || v.cwiseAbs().maxCoeff() > kExplodedMagnitude;
+  };
+  for (Eigen::Index i = 0; i < state.positions.size() / 3; ++i) {
+    const int p = static_cast<int>(i);
+    if (bad(state.position(p))) {
+      return "particle " + std::to_string(p) + " position is " +
+             (is_finite(state.position(p)) ? "beyond 1e8" : "not finite");
+    }
+    if (bad(state.velocity(p))) {
+      return "particle " + std::to_string(p) + " velocity is " +
+             (is_finite(state.velocity(p)) ? "beyond 1e8" : "not finite");
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+Result<StepReport> ClothSimulator::step(double dt) {
+  if (!std::isfinite(dt) || dt <= 0.0) {
+    return fail("time step must be a positive finite number, got " + format_number(dt));
+  }
+  Impl& s = *impl_;
+  const auto start = std::chrono::steady_clock::now();
+  StepReport report;
+  report.substeps = s.options.effective_substeps();
+  s.backup.positions = s.state.positions;
+  s.backup.velocities = s.state.velocities;
+  const double h = dt / report.substeps;
+  if (s.explicit_euler) {
+    s.explicit_euler->step(s.state, dt, report.substeps);
+  } else {
+    for (int k = 0; k < report.substeps; ++k) s.implicit_euler->step(s.state, h, report);
+  }
+  if (auto problem = divergence(s.state)) {
+    s.state.positions = s.backup.positions;
+    s.state.velocities = s.backup.velocities;
+    return fail("the simulation diverged in step " + std::to_string(s.steps + 1) + " (" +
+                std::string(to_string(s.options.integrator)) + ", " +
+                std::to_string(report.substeps) + " substeps of " + format_number(h) +
+                " s): " + *problem);
+  }
+  ++s.steps;
+  report.energy = cloth_energy(s.model, s.state).total;
+  report.ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace animkit

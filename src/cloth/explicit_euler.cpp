@@ -1,0 +1,41 @@
+#include "animkit/cloth/explicit_euler.h"
+
+namespace animkit {
+
+void cloth_forces(const ClothModel& model, const Eigen::VectorXd& positions,
+                  const Eigen::VectorXd& velocities, Eigen::VectorXd& forces) {
+  for (int i = 0; i < model.particle_count(); ++i) {
+    forces.segment<3>(3 * i) = Vec3(0.0, -model.mass[i] * model.gravity, 0.0);
+  }
+  for (int s = 0; s < model.spring_count(); ++s) {
+    const auto [a, b] = model.springs[s];
+    const Vec3 d = positions.segment<3>(3 * b) - positions.segment<3>(3 * a);
+    const double length = d.norm();
+    if (length == 0.0) continue;  // no direction: the spring cannot push either way
+    const Vec3 u = d / length;
+    const double relative_speed =
+        (velocities.segment<3>(3 * b) - velocities.segment<3>(3 * a)).dot(u);
+    // The lab's spring force on a: (k (l - L) + c (v_b - v_a).u) u; b gets the opposite.
+    const Vec3 f =
+        (model.stiffness[s] * (length - model.rest_length[s]) + model.damping * relative_speed) * u;
+    forces.segment<3>(3 * a) += f;
+    forces.segment<3>(3 * b) -= f;
+  }
+}
+
+ExplicitEuler::ExplicitEuler(const ClothModel& model)
+    : model_(model), forces_(3 * model.particle_count()) {}
+
+void ExplicitEuler::step(ClothState& state, double h, int substeps) {
+  const double dt = h / substeps;
+  for (int k = 0; k < substeps; ++k) {
+    cloth_forces(model_, state.positions, state.velocities, forces_);
+    for (int i = 0; i < model_.particle_count(); ++i) {
+      if (model_.pinned[i]) continue;
+      state.velocities.segment<3>(3 * i) += (dt / model_.mass[i]) * forces_.segment<3>(3 * i);
+      state.positions.segment<3>(3 * i) += dt * state.velocities.segment<3>(3 * i);
+    }
+  }
+}
+
+}  // namespace animkit

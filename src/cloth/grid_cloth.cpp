@@ -1,0 +1,38 @@
+#include "animkit/cloth/grid_cloth.h"
+
+namespace animkit {
+
+ClothDesc make_grid_cloth(const GridClothOptions& o) {
+  ClothDesc desc;
+  desc.gravity = o.gravity;
+  desc.damping = o.damping;
+  if (o.cells < 1) return desc;  // no particles: validate() says so
+  const int n = o.cells;
+  const double spacing = o.size / n;
+  const auto id = [n](int i, int j) { return grid_index(n, i, j); };
+  const auto spring = [&](int a, int b) { desc.springs.push_back({a, b, -1.0, o.stiffness}); };
+  // Same particle and spring order as the lab's grid builder.
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      desc.particles.push_back(
+          {Vec3(i * spacing, o.height, j * spacing - 0.5 * o.size), Vec3::Zero(), o.mass, false});
+      if (i > 0) spring(id(i, j), id(i - 1, j));
+      if (i > 1) spring(id(i, j), id(i - 2, j));
+      if (j > 0) spring(id(i, j), id(i, j - 1));
+      if (j > 1) spring(id(i, j), id(i, j - 2));
+      if (i > 0 && j > 0) spring(id(i, j), id(i - 1, j - 1));
+      if (i > 0 && j < n) spring(id(i, j), id(i - 1, j + 1));
+    }
+  }
+  desc.particles[id(0, 0)].pinned = true;
+  desc.particles[id(0, n)].pinned = true;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      desc.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      desc.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+  return desc;
+}
+
+}  // namespace animkit

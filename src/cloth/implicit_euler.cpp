@@ -1,0 +1,193 @@
+#include "animkit/cloth/implicit_euler.h"
+
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "animkit/core/validation.h"
+
+namespace animkit {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Floor under the gradient tolerance. The gradient sums the inertia term M (x - y) / h^2 and
+// spring forces k (l - L) u, each computed from coordinates with relative rounding of a few
+// eps, so below ~16 eps (|M y| / h^2 + |(k L) over springs|) it is rounding noise that no
+// solver can shrink further.
+constexpr double kRoundingFloor = 16.0 * std::numeric_limits<double>::epsilon();
+
+}  // namespace
+
+std::optional<Error> ImplicitOptions::validate() const {
+  if (!std::isfinite(tolerance) || tolerance <= 0.0 || tolerance >= 1.0) {
+    return Error{"tolerance must be in (0, 1), got " + format_number(tolerance)};
+  }
+  if (max_newton_iterations < 1) {
+    return Error{"max Newton iterations must be at least 1, got " +
+                 std::to_string(max_newton_iterations)};
+  }
+  if (!std::isfinite(beta) || beta <= 0.0 || beta >= 1.0) {
+    return Error{"line-search beta must be in (0, 1), got " + format_number(beta)};
+  }
+  if (!std::isfinite(gamma) || gamma <= 0.0 || gamma >= 1.0) {
+    return Error{"line-search gamma must be in (0, 1), got " + format_number(gamma)};
+  }
+  if (max_line_search_steps < 1) {
+    return Error{"max line-search steps must be at least 1, got " +
+                 std::to_string(max_line_search_steps)};
+  }
+  return std::nullopt;
+}
+
+struct ImplicitEuler::DirectSolver {
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+};
+
+ImplicitEuler::ImplicitEuler(const ClothModel& model, const ImplicitOptions& options)
+    : model_(model),
+      options_(options),
+      potential_(model),
+      hessian_(build_hessian_pattern(model)),
+      pcg_(model.particle_count()),
+      x_(3 * model.particle_count()),
+      gradient_(3 * model.particle_count()),
+      dx_(3 * model.particle_count()),
+      trial_(3 * model.particle_count()),
+      rhs_(3 * model.particle_count()) {
+  for (int k = 0; k < model.spring_count(); ++k) {
+    spring_force_scale_ += std::pow(model.stiffness[k] * model.rest_length[k], 2);
+  }
+  spring_force_scale_ = std::sqrt(spring_force_scale_);
+  if (options_.linear_solver == LinearSolverKind::direct) {
+    direct_ = std::make_unique<DirectSolver>();
+    direct_->ldlt.analyzePattern(hessian_.matrix);  // once: the pattern never changes
+  }
+}
+
+ImplicitEuler::~ImplicitEuler() = default;
+
+bool ImplicitEuler::solve_newton_system(double relative_gradient, NewtonIterationRecord& record) {
+  rhs_ = -gradient_;
+  if (direct_) {
+    direct_->ldlt.factorize(hessian_.matrix);
+    dx_ = direct_->ldlt.solve(rhs_);
+    // LDL^T of a symmetric matrix: positive definite exactly when every pivot is positive.
+    return direct_->ldlt.info() == Eigen::Success && direct_->ldlt.vectorD().minCoeff() > 0.0;
+  }
+  // Eisenstat-Walker-style forcing term: loose while far from the solution, tight near it,
+  // so Newton keeps its fast local convergence without solving early systems exactly.
+  const double forcing = std::clamp(std::sqrt(relative_gradient), 1e-3, 0.5) * 0.1;
+  const PcgResult pcg = pcg_.solve(hessian_, rhs_, dx_, forcing, 3 * model_.particle_count());
+  record.linear_iterations += pcg.iterations;
+  return !pcg.indefinite;
+}
+
+void ImplicitEuler::step(ClothState& state, double h, StepReport& report) {
+  auto t = Clock::now();
+  potential_.prepare(state, h);
+  x_ = potential_.predicted();
+  double g = potential_.value(x_);
+  potential_.gradient(x_, gradient_);
+  double gradient_norm = gradient_.norm();
+  report.ms_gradient += ms_since(t);
+
+  const double start_norm = gradient_norm;
+  if (report.newton_iterations == 0 && report.gradient_norm_start == 0.0) {
+    report.gradient_norm_start = start_norm;
+  }
+  double inertia_scale = 0.0;  // |M y|
+  for (int i = 0; i < model_.particle_count(); ++i) {
+    inertia_scale += model_.mass[i] * model_.mass[i] * x_.segment<3>(3 * i).squaredNorm();
+  }
+  const double stop =
+      std::max(options_.tolerance * start_norm,
+               kRoundingFloor * (std::sqrt(inertia_scale) / (h * h) + spring_force_scale_));
+  report.gradient_tolerance = std::max(report.gradient_tolerance, stop);
+  bool converged = gradient_norm <= stop;
+  for (int k = 0; !converged && k < options_.max_newton_iterations; ++k) {
+    NewtonIterationRecord record;
+    record.objective = g;
+    record.gradient_norm = gradient_norm;
+
+    // Hessian and Newton direction: exact Hessian first unless always projecting; redo with
+    // the projected one when the solve meets negative curvature or gives no descent.
+    bool projected = options_.projection == HessianProjection::always;
+    double slope = 0.0;
+    for (;;) {
+      t = Clock::now();
+      potential_.hessian(x_, hessian_, projected);
+      report.ms_hessian += ms_since(t);
+      t = Clock::now();
+      const bool positive = solve_newton_system(gradient_norm / start_norm, record);
+      slope = gradient_.dot(dx_);
+      report.ms_linear_solve += ms_since(t);
+      if ((positive && slope < 0.0) || projected) break;
+      projected = true;
+    }
+    record.projected = projected;
+    report.projected_iterations += projected ? 1 : 0;
+    if (!(slope < 0.0)) {
+      // Only rounding can make the SPD system's solution ascend; steepest descent then.
+      dx_ = -gradient_;
+      slope = -gradient_norm * gradient_norm;
+    }
+
+    // Backtracking line search (SPEC.md): alpha = 1/beta; repeat alpha = beta alpha,
+    // x' = x + alpha dx, until g(x') <= g(x) + gamma alpha grad.dx. The difference
+    // g(x') - g(x) is evaluated directly (see IncrementalPotential::difference); a NaN rejects.
+    t = Clock::now();
+    double alpha = 1.0 / options_.beta;
+    double decrease = 0.0;
+    bool accepted = false;
+    for (int s = 0; s <= options_.max_line_search_steps && !accepted; ++s) {
+      alpha *= options_.beta;
+      trial_ = alpha * dx_;
+      decrease = potential_.difference(x_, trial_);
+      accepted = decrease <= options_.gamma * alpha * slope;
+      record.line_search_steps = s;
+    }
+    report.ms_line_search += ms_since(t);
+    report.line_search_steps += record.line_search_steps;
+    report.linear_iterations += record.linear_iterations;
+    if (!accepted) break;  // no decrease found: keep x (reported as not converged)
+
+    x_ += trial_;
+    g += decrease;
+    t = Clock::now();
+    potential_.gradient(x_, gradient_);
+    gradient_norm = gradient_.norm();
+    report.ms_gradient += ms_since(t);
+    ++report.newton_iterations;
+    converged = gradient_norm <= stop;
+
+    record.decrease = decrease;
+    record.slope = slope;
+    record.alpha = alpha;
+    if (options_.record_iterations) report.iterations.push_back(record);
+  }
+  report.gradient_norm_end = gradient_norm;
+  report.converged = report.converged && converged;
+
+  // v_{n+1} = (x_{n+1} - x_n) / h; pinned particles were never unknowns and stay put.
+  for (int i = 0; i < model_.particle_count(); ++i) {
+    if (model_.pinned[i]) {
+      x_.segment<3>(3 * i) = state.positions.segment<3>(3 * i);
+      state.velocities.segment<3>(3 * i).setZero();
+    } else {
+      state.velocities.segment<3>(3 * i) =
+          (x_.segment<3>(3 * i) - state.positions.segment<3>(3 * i)) / h;
+    }
+  }
+  state.positions.swap(x_);
+}
+
+}  // namespace animkit

@@ -1,0 +1,127 @@
+#include "animkit/cloth/incremental_potential.h"
+
+#include <cassert>
+
+#include "animkit/cloth/spring_energy.h"
+
+namespace animkit {
+
+namespace {
+Vec3 at(const Eigen::VectorXd& v, int i) {
+  return v.segment<3>(3 * i);
+}
+}  // namespace
+
+IncrementalPotential::IncrementalPotential(const ClothModel& model)
+    : model_(model),
+      y_(3 * model.particle_count()),
+      x_start_(3 * model.particle_count()),
+      damping_axis_(model.springs.size(), Vec3::Zero()) {}
+
+void IncrementalPotential::prepare(const ClothState& state, double h) {
+  assert(h > 0.0);
+  h_ = h;
+  x_start_ = state.positions;
+  for (int i = 0; i < model_.particle_count(); ++i) {
+    if (model_.pinned[i]) {
+      y_.segment<3>(3 * i) = at(state.positions, i);
+    } else {
+      y_.segment<3>(3 * i) = at(state.positions, i) + h * at(state.velocities, i) +
+                             Vec3(0.0, -h * h * model_.gravity, 0.0);
+    }
+  }
+  for (int s = 0; s < model_.spring_count(); ++s) {
+    const auto [a, b] = model_.springs[s];
+    const Vec3 d = at(x_start_, a) - at(x_start_, b);
+    const double length = d.norm();
+    damping_axis_[s] = length > 0.0 ? Vec3(d / length) : Vec3::Zero();
+  }
+}
+
+double IncrementalPotential::value(const Eigen::VectorXd& x) const {
+  double inertia = 0.0;
+  for (int i = 0; i < model_.particle_count(); ++i) {
+    inertia += model_.mass[i] * (at(x, i) - at(y_, i)).squaredNorm();
+  }
+  double elastic = 0.0, damping = 0.0;
+  for (int s = 0; s < model_.spring_count(); ++s) {
+    const auto [a, b] = model_.springs[s];
+    elastic += spring_energy(at(x, a), at(x, b), model_.stiffness[s], model_.rest_length[s]);
+    const double axial =
+        (at(x, a) - at(x_start_, a) - at(x, b) + at(x_start_, b)).dot(damping_axis_[s]);
+    damping += axial * axial;
+  }
+  return inertia / (2.0 * h_ * h_) + elastic + model_.damping / (2.0 * h_) * damping;
+}
+
+double IncrementalPotential::difference(const Eigen::VectorXd& x,
+                                        const Eigen::VectorXd& step) const {
+  double inertia = 0.0;
+  for (int i = 0; i < model_.particle_count(); ++i) {
+    const Vec3 s = at(step, i);
+    inertia += model_.mass[i] * s.dot(2.0 * (at(x, i) - at(y_, i)) + s);
+  }
+  double elastic = 0.0, damping = 0.0;
+  for (int k = 0; k < model_.spring_count(); ++k) {
+    const auto [a, b] = model_.springs[k];
+    const Vec3 d = at(x, a) - at(x, b);
+    const Vec3 ds = at(step, a) - at(step, b);
+    const double l = d.norm(), l_new = (d + ds).norm();
+    // l' - l = (|d + ds|^2 - |d|^2) / (l' + l) = ds.(2d + ds) / (l' + l);
+    // E' - E = 1/2 k (l' - l)(l' + l - 2L).
+    const double sum = l + l_new;
+    const double dl = sum > 0.0 ? ds.dot(2.0 * d + ds) / sum : 0.0;
+    elastic += 0.5 * model_.stiffness[k] * dl * (sum - 2.0 * model_.rest_length[k]);
+    // ((q + dq)^2 - q^2) = dq (2q + dq), q the axial displacement since x_n.
+    const Vec3& u = damping_axis_[k];
+    const double q = (d - (at(x_start_, a) - at(x_start_, b))).dot(u);
+    const double dq = ds.dot(u);
+    damping += dq * (2.0 * q + dq);
+  }
+  return inertia / (2.0 * h_ * h_) + elastic + model_.damping / (2.0 * h_) * damping;
+}
+
+void IncrementalPotential::gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const {
+  const double inv_h2 = 1.0 / (h_ * h_);
+  for (int i = 0; i < model_.particle_count(); ++i) {
+    gradient.segment<3>(3 * i) = (model_.mass[i] * inv_h2) * (at(x, i) - at(y_, i));
+  }
+  const double c = model_.damping / h_;
+  for (int s = 0; s < model_.spring_count(); ++s) {
+    const auto [a, b] = model_.springs[s];
+    const Vec3& u = damping_axis_[s];
+    const double axial = (at(x, a) - at(x_start_, a) - at(x, b) + at(x_start_, b)).dot(u);
+    const Vec3 g = spring_gradient(at(x, a), at(x, b), model_.stiffness[s], model_.rest_length[s]) +
+                   (c * axial) * u;
+    gradient.segment<3>(3 * a) += g;
+    gradient.segment<3>(3 * b) -= g;
+  }
+  for (int i = 0; i < model_.particle_count(); ++i) {
+    if (model_.pinned[i]) gradient.segment<3>(3 * i).setZero();
+  }
+}
+
+void IncrementalPotential::hessian(const Eigen::VectorXd& x, HessianPattern& pattern,
+                                   bool projected) const {
+  double* values = pattern.matrix.valuePtr();
+  std::fill(values, values + pattern.matrix.nonZeros(), 0.0);
+  const double inv_h2 = 1.0 / (h_ * h_);
+  for (int i = 0; i < model_.particle_count(); ++i) {
+    const double diagonal = model_.pinned[i] ? 1.0 : model_.mass[i] * inv_h2;
+    HessianPattern::add(values, pattern.diagonal[i], Mat3::Identity() * diagonal);
+  }
+  const double c = model_.damping / h_;
+  for (int s = 0; s < model_.spring_count(); ++s) {
+    const auto [a, b] = model_.springs[s];
+    const Vec3& u = damping_axis_[s];
+    const Mat3 k = spring_hessian_block(at(x, a), at(x, b), model_.stiffness[s],
+                                        model_.rest_length[s], projected) +
+                   c * (u * u.transpose());
+    if (!model_.pinned[a]) HessianPattern::add(values, pattern.diagonal[a], k);
+    if (!model_.pinned[b]) HessianPattern::add(values, pattern.diagonal[b], k);
+    HessianPattern::add(values, pattern.off_diagonal[s][0], -k);
+    HessianPattern::add(values, pattern.off_diagonal[s][1], -k);
+  }
+}
+
+}  // namespace animkit

@@ -1,0 +1,276 @@
+#include "animkit/cloth/implicit_euler.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "animkit/cloth/cloth_simulator.h"
+#include "animkit/cloth/grid_cloth.h"
+
+namespace animkit {
+namespace {
+
+constexpr double kFrame = 1.0 / 60.0;
+
+ClothSimulator simulator(const ClothDesc& desc, IntegratorKind kind, ImplicitOptions implicit = {},
+                         int substeps = 0) {
+  auto sim = ClothSimulator::create(desc, {kind, substeps, implicit});
+  EXPECT_TRUE(sim) << sim.error().message;
+  return std::move(*sim);
+}
+
+// A stiff cloth crumpled at random: every spring keeps its flat rest length, so the first
+// steps start far from equilibrium, with springs compressed and stretched hard.
+ClothDesc crumpled_cloth(double stiffness) {
+  ClothDesc desc = make_grid_cloth({.cells = 6, .stiffness = stiffness});
+  for (SpringDesc& s : desc.springs) {
+    s.rest_length = (desc.particles[s.a].position - desc.particles[s.b].position).norm();
+  }
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.3, 0.3);
+  for (ParticleDesc& p : desc.particles) {
+    if (!p.pinned) p.position += Vec3(u(rng), u(rng), u(rng));
+  }
+  return desc;
+}
+
+class ImplicitIntegrators : public testing::TestWithParam<IntegratorKind> {};
+
+TEST_P(ImplicitIntegrators, EveryAcceptedStepSatisfiesArmijo) {
+  ImplicitOptions options;
+  options.record_iterations = true;
+  // A crumpled stiff cloth and big steps make the line search work.
+  auto sim = simulator(crumpled_cloth(1e4), GetParam(), options);
+  int backtracked = 0;
+  for (int frame = 0; frame < 30; ++frame) {
+    const auto report = sim.step(1.0);
+    ASSERT_TRUE(report) << report.error().message;
+    for (const NewtonIterationRecord& it : report->iterations) {
+      EXPECT_LT(it.slope, 0.0);  // a descent direction
+      EXPECT_LE(it.decrease, options.gamma * it.alpha * it.slope);
+      EXPECT_GT(it.alpha, 0.0);
+      EXPECT_LE(it.alpha, 1.0);
+      backtracked += it.line_search_steps;
+    }
+  }
+  EXPECT_GT(backtracked, 0) << "the scene never exercised the backtracking";
+}
+
+TEST_P(ImplicitIntegrators, ConvergeToTheGradientTolerance) {
+  auto sim = simulator(make_grid_cloth(), GetParam());
+  for (int frame = 0; frame < 60; ++frame) {
+    const auto report = sim.step(kFrame);
+    ASSERT_TRUE(report);
+    EXPECT_TRUE(report->converged);
+    EXPECT_LE(report->gradient_norm_end, report->gradient_tolerance);
+    // The tolerance is 1e-6 of the start, unless that is below rounding (first frames:
+    // the flat cloth starts almost in balance).
+    EXPECT_LE(report->gradient_tolerance, std::max(1e-6 * report->gradient_norm_start, 1e-9));
+  }
+}
+
+TEST_P(ImplicitIntegrators, PinnedParticlesNeverMove) {
+  auto sim = simulator(make_grid_cloth(), GetParam());
+  const Vec3 a = sim.state().position(grid_index(10, 0, 0));
+  const Vec3 b = sim.state().position(grid_index(10, 0, 10));
+  for (int frame = 0; frame < 120; ++frame) {
+    ASSERT_TRUE(sim.step(kFrame));
+    ASSERT_EQ(sim.state().position(grid_index(10, 0, 0)), a);
+    ASSERT_EQ(sim.state().position(grid_index(10, 0, 10)), b);
+    ASSERT_EQ(sim.state().velocity(grid_index(10, 0, 0)), Vec3::Zero());
+  }
+}
+
+TEST_P(ImplicitIntegrators, AFreeParticleFallsExactlyUnderGravity) {
+  // No springs: implicit Euler is v_{n+1} = v_n - h g, x_{n+1} = x_n + h v_{n+1}, exactly.
+  ClothDesc desc;
+  desc.particles = {{Vec3(0.0, 10.0, 0.0), Vec3(0.5, 1.0, 0.0), 2.0, false}};
+  desc.gravity = 0.3;
+  auto sim = simulator(desc, GetParam());
+  Vec3 x(0.0, 10.0, 0.0), v(0.5, 1.0, 0.0);
+  for (int n = 0; n < 100; ++n) {
+    ASSERT_TRUE(sim.step(kFrame));
+    v.y() -= kFrame * 0.3;
+    x += kFrame * v;
+    // Equal up to rounding: the integrator forms v from (x_{n+1} - x_n) / h.
+    EXPECT_LT((sim.state().position(0) - x).norm(), 1e-11);
+    EXPECT_LT((sim.state().velocity(0) - v).norm(), 1e-9);
+  }
+}
+
+TEST_P(ImplicitIntegrators, DampingMakesTotalEnergyDecrease) {
+  // A stretched, swinging cloth: every step loses energy (damping, and implicit Euler's own
+  // numerical dissipation), never gains it.
+  auto sim = simulator(make_grid_cloth({.damping = 2.0}), GetParam());
+  double previous = cloth_energy(sim.model(), sim.state()).total;
+  for (int frame = 0; frame < 300; ++frame) {
+    const auto report = sim.step(kFrame);
+    ASSERT_TRUE(report);
+    EXPECT_LE(report->energy, previous + 1e-9 * std::abs(previous)) << "frame " << frame;
+    previous = report->energy;
+  }
+}
+
+TEST_P(ImplicitIntegrators, StableWhereExplicitEulerDiverges) {
+  const ClothDesc stiff = make_grid_cloth({.stiffness = 1e4});
+  auto implicit = simulator(stiff, GetParam());
+  for (int frame = 0; frame < 600; ++frame) {
+    const auto report = implicit.step(1.0 / 30.0);
+    ASSERT_TRUE(report) << report.error().message;
+  }
+  // Bounded: no particle farther from the pins than the cloth's diagonal allows, nothing fast.
+  for (int p = 0; p < implicit.model().particle_count(); ++p) {
+    EXPECT_LT((implicit.state().position(p) - Vec3(0.0, 1.5, 0.0)).norm(), 3.5);
+    EXPECT_LT(implicit.state().velocity(p).norm(), 10.0);
+  }
+
+  auto explicit_euler = simulator(stiff, IntegratorKind::explicit_euler, {}, /*substeps=*/1);
+  std::optional<std::string> error;
+  int frame = 0;
+  for (; frame < 600 && !error; ++frame) {
+    const ClothState before = explicit_euler.state();
+    const auto report = explicit_euler.step(1.0 / 30.0);
+    if (!report) {
+      error = report.error().message;
+      // The diverged step was undone: the state is the last good one.
+      EXPECT_EQ(explicit_euler.state().positions, before.positions);
+    }
+  }
+  ASSERT_TRUE(error) << "explicit Euler with one substep should diverge at stiffness 1e4";
+  EXPECT_EQ(error->rfind("the simulation diverged in step " + std::to_string(frame), 0), 0u)
+      << *error;
+}
+
+TEST_P(ImplicitIntegrators, TheLabsClothHangsSymmetrically) {
+  // Pinned at (0,0) and (0,n), the cloth is mirror-symmetric about z = 0 and stays so while
+  // it swings (a 2-unit pendulum under g = 0.3 swings for a long time: its period is ~16 s).
+  auto sim = simulator(make_grid_cloth(), GetParam());
+  const int n = 10;
+  const auto expect_symmetric = [&](double tolerance) {
+    for (int i = 0; i <= n; ++i) {
+      for (int j = 0; j <= n; ++j) {
+        const Vec3 p = sim.state().position(grid_index(n, i, j));
+        const Vec3 q = sim.state().position(grid_index(n, i, n - j));
+        EXPECT_NEAR(p.x(), q.x(), tolerance);
+        EXPECT_NEAR(p.y(), q.y(), tolerance);
+        EXPECT_NEAR(p.z(), -q.z(), tolerance);
+      }
+    }
+  };
+  for (int frame = 0; frame < 600; ++frame) ASSERT_TRUE(sim.step(kFrame));
+  expect_symmetric(1e-6);
+  // Steps of 2 s: implicit Euler stays stable and its numerical damping (~ omega^2 h / 2 per
+  // second) stops the swing, so it settles to the rest shape: at rest, still symmetric, the
+  // free edge hanging below the pins.
+  for (int step = 0; step < 60; ++step) ASSERT_TRUE(sim.step(2.0));
+  expect_symmetric(1e-6);
+  EXPECT_LT(sim.state().position(grid_index(n, n, n / 2)).y(), -0.5);
+  EXPECT_LT(sim.state().velocities.cwiseAbs().maxCoeff(), 1e-4);
+  const Vec3 top = sim.state().position(grid_index(n, 0, n / 2));
+  EXPECT_NEAR(top.z(), 0.0, 1e-9);
+  EXPECT_LT(top.y(), 1.5);  // the edge between the pins sags
+}
+
+INSTANTIATE_TEST_SUITE_P(BothLinearSolvers, ImplicitIntegrators,
+                         testing::Values(IntegratorKind::implicit_direct,
+                                         IntegratorKind::implicit_pcg),
+                         [](const auto& param_info) {
+                           std::string name(to_string(param_info.param));
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+TEST(ImplicitEuler, NewtonConvergesQuadraticallyNearTheSolution) {
+  // Exact linear solves (direct) on a stiff cloth with big steps, where Newton needs several
+  // iterations. Once the gradient is small, each iteration about squares it: from 1e-3 of its
+  // start down to 1e-10 takes Newton 2 or 3 iterations (1e-3 -> 1e-6 -> 1e-12), where a
+  // linearly convergent method at rate 0.3 would take 14.
+  ImplicitOptions options;
+  options.record_iterations = true;
+  options.tolerance = 1e-12;
+  auto sim = simulator(make_grid_cloth({.cells = 6, .stiffness = 1e4}),
+                       IntegratorKind::implicit_direct, options);
+  for (int frame = 0; frame < 12; ++frame) {
+    const auto report = sim.step(0.2);
+    ASSERT_TRUE(report);
+    ASSERT_TRUE(report->converged);
+    int in_final_phase = 0;  // iterates with 1e-10 < |grad| / |grad_0| <= 1e-3
+    for (const auto& it : report->iterations) {
+      const double e = it.gradient_norm / report->gradient_norm_start;
+      in_final_phase += (e <= 1e-3 && e > 1e-10) ? 1 : 0;
+    }
+    EXPECT_LE(in_final_phase, 4) << "frame " << frame;
+    EXPECT_LE(report->newton_iterations, 8) << "frame " << frame;
+  }
+}
+
+TEST(ImplicitEuler, AlwaysProjectingConvergesButMoreSlowly) {
+  // The projected Hessian is a safe but inexact model where springs are compressed.
+  ImplicitOptions exact, projected;
+  projected.projection = HessianProjection::always;
+  auto a = simulator(make_grid_cloth({.cells = 6, .stiffness = 1e4}),
+                     IntegratorKind::implicit_direct, exact);
+  auto b = simulator(make_grid_cloth({.cells = 6, .stiffness = 1e4}),
+                     IntegratorKind::implicit_direct, projected);
+  int newton_exact = 0, newton_projected = 0;
+  for (int frame = 0; frame < 12; ++frame) {
+    const auto ra = a.step(0.2), rb = b.step(0.2);
+    ASSERT_TRUE(ra && rb);
+    EXPECT_TRUE(ra->converged && rb->converged);
+    newton_exact += ra->newton_iterations;
+    newton_projected += rb->newton_iterations;
+    EXPECT_EQ(rb->projected_iterations, rb->newton_iterations);
+    // Same minimizer, to the tolerance: compare after the first step, before the buckling
+    // cloth amplifies the tolerance-sized differences.
+    if (frame == 0) {
+      EXPECT_LT((a.state().positions - b.state().positions).cwiseAbs().maxCoeff(), 1e-6);
+    }
+  }
+  EXPECT_LT(newton_exact, newton_projected);
+}
+
+TEST(ImplicitEuler, DirectAndPcgReachTheSameState) {
+  auto direct = simulator(make_grid_cloth(), IntegratorKind::implicit_direct);
+  auto pcg = simulator(make_grid_cloth(), IntegratorKind::implicit_pcg);
+  for (int frame = 0; frame < 120; ++frame) {
+    ASSERT_TRUE(direct.step(kFrame));
+    ASSERT_TRUE(pcg.step(kFrame));
+  }
+  EXPECT_LT((direct.state().positions - pcg.state().positions).cwiseAbs().maxCoeff(), 1e-6);
+}
+
+TEST(ClothSimulator, RejectsBadInput) {
+  auto sim = simulator(make_grid_cloth(), IntegratorKind::implicit_pcg);
+  EXPECT_EQ(sim.step(0.0).error().message, "time step must be a positive finite number, got 0");
+  EXPECT_EQ(sim.step(std::nan("")).error().message,
+            "time step must be a positive finite number, got nan");
+  ImplicitOptions bad;
+  bad.tolerance = 0.0;
+  EXPECT_EQ(ClothSimulator::create(make_grid_cloth(), {IntegratorKind::implicit_pcg, 0, bad})
+                .error()
+                .message,
+            "tolerance must be in (0, 1), got 0");
+  EXPECT_EQ(ClothSimulator::create(make_grid_cloth(), {IntegratorKind::explicit_euler, -1, {}})
+                .error()
+                .message,
+            "substeps must be at least 1 (or 0 for the default), got -1");
+}
+
+TEST(ClothSimulator, ExplicitEulerWithTheLabsSubstepsIsStableAndAgreesWithImplicit) {
+  auto explicit_euler = simulator(make_grid_cloth(), IntegratorKind::explicit_euler);
+  auto implicit = simulator(make_grid_cloth(), IntegratorKind::implicit_pcg);
+  for (int frame = 0; frame < 60; ++frame) {
+    const auto report = explicit_euler.step(kFrame);
+    ASSERT_TRUE(report);
+    EXPECT_EQ(report->substeps, 1000);
+    ASSERT_TRUE(implicit.step(kFrame));
+  }
+  // First-order methods on the same motion: close, not equal (implicit Euler damps).
+  EXPECT_LT((explicit_euler.state().positions - implicit.state().positions).cwiseAbs().maxCoeff(),
+            0.05);
+}
+
+}  // namespace
+}  // namespace animkit
