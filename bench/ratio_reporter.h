@@ -16,7 +16,10 @@ class RatioReporter : public benchmark::ConsoleReporter {
     for (const Run& run : runs) {
       // With repetitions, keep the median aggregate; otherwise the single run.
       if (run.run_type == Run::RT_Aggregate && run.aggregate_name != "median") continue;
-      auto& counters = results_[run.run_name.function_name];
+      // Keyed "BM_Name" or "BM_Name/arg:value/...", without repetition or aggregate suffixes.
+      std::string key = run.run_name.function_name;
+      if (!run.run_name.args.empty()) key += "/" + run.run_name.args;
+      auto& counters = results_[key];
       for (const auto& [name, counter] : run.counters) counters[name] = counter.value;
     }
   }

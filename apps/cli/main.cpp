@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "cli_errors.h"
+#include "cloth_command.h"
 #include "demo_command.h"
 #include "ik_command.h"
 
@@ -14,6 +15,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "animkit 0.1.0");
   const auto run_ik = animkit::cli::add_ik_command(app);
+  const auto run_cloth = animkit::cli::add_cloth_command(app);
   const auto run_demo = animkit::cli::add_demo_command(app);
 
   try {
@@ -29,6 +31,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (app.got_subcommand("ik")) return run_ik();
+    if (app.got_subcommand("cloth")) return run_cloth();
     return run_demo();
   } catch (const std::exception& e) {  // e.g. out of memory: still one line, never a crash
     return animkit::cli::report_error(e.what());

@@ -143,7 +143,7 @@ Result<StepReport> ClothSimulator::step(double dt) {
     s.state.velocities = s.backup.velocities;
     return fail("the simulation diverged in step " + std::to_string(s.steps + 1) + " (" +
                 std::string(to_string(s.options.integrator)) + ", " +
-                std::to_string(report.substeps) + " substeps of " + format_number(h) +
+                std::to_string(report.substeps) + " substep(s) of " + format_number(h) +
                 " s): " + *problem);
   }
   ++s.steps;

@@ -1,6 +1,30 @@
 #include "animkit/cloth/grid_cloth.h"
 
+#include <cmath>
+#include <string>
+
+#include "animkit/core/validation.h"
+
 namespace animkit {
+
+std::optional<Error> GridClothOptions::validate() const {
+  const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  if (cells < 1 || cells > kMaxGridCells) {
+    return Error{"grid must have between 1 and " + std::to_string(kMaxGridCells) +
+                 " cells per side, got " + std::to_string(cells)};
+  }
+  if (!positive(size)) return Error{"cloth size must be positive and finite, got " + format_number(size)};
+  if (!std::isfinite(height)) return Error{"cloth height must be finite"};
+  if (!positive(mass)) return Error{"mass must be positive and finite, got " + format_number(mass)};
+  if (!positive(stiffness)) {
+    return Error{"stiffness must be positive and finite, got " + format_number(stiffness)};
+  }
+  if (!std::isfinite(damping) || damping < 0.0) {
+    return Error{"damping must be a finite number >= 0, got " + format_number(damping)};
+  }
+  if (!std::isfinite(gravity)) return Error{"gravity must be finite, got " + format_number(gravity)};
+  return std::nullopt;
+}
 
 ClothDesc make_grid_cloth(const GridClothOptions& o) {
   ClothDesc desc;

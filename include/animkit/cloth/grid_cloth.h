@@ -17,10 +17,16 @@ struct GridClothOptions {
   double stiffness = 100.0;
   double damping = 0.2;
   double gravity = 0.3;
+
+  /// The first out-of-range option, or nothing. Cells are capped at kMaxGridCells.
+  std::optional<Error> validate() const;
 };
 
+/// Largest grid make_grid_cloth() accepts per side (about 4 million particles).
+constexpr int kMaxGridCells = 2000;
+
 /// The grid's description; triangles split each cell along its (i,j)-(i+1,j+1) diagonal.
-/// Invalid options (cells < 1, non-positive size, ...) are reported by validate()/build_cloth().
+/// Check the options with validate() first: invalid ones give an invalid description.
 ClothDesc make_grid_cloth(const GridClothOptions& options = {});
 
 /// Index of particle (i, j) in a grid of `cells` cells per side.

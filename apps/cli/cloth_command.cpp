@@ -1,0 +1,180 @@
+#include "cloth_command.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "animkit/cloth/cloth_run.h"
+#include "animkit/cloth/cloth_simulator.h"
+#include "animkit/cloth/grid_cloth.h"
+#include "animkit/core/validation.h"
+#include "animkit/io/atomic_write.h"
+#include "animkit/io/cloth_report.h"
+#include "animkit/io/point_cache.h"
+#include "cli_errors.h"
+
+namespace animkit::cli {
+
+namespace {
+
+constexpr int kMaxFrames = 1'000'000;
+
+struct ClothArgs {
+  GridClothOptions grid;
+  int frames = 300;
+  double dt = 1.0 / 60.0;
+  std::string integrator{to_string(SimulationOptions{}.integrator)};
+  int substeps = 0;
+  double tolerance = ImplicitOptions{}.tolerance;
+  std::string out;
+};
+
+std::string integrator_names() {
+  std::string names;
+  for (IntegratorKind k : all_integrators()) names += (names.empty() ? "" : ", ") + std::string(to_string(k));
+  return names;
+}
+
+// "frame 120/600, 1.23 ms/step" on one rewritten line, only when stderr is a terminal.
+class ProgressLine {
+ public:
+  explicit ProgressLine(int total) : total_(total), enabled_(::isatty(::fileno(stderr)) != 0) {}
+  void update(int frame, double ms) {
+    if (!enabled_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (frame < total_ && now - last_ < std::chrono::milliseconds(200)) return;
+    last_ = now;
+    std::fprintf(stderr, "\rframe %d/%d, %.3f ms/step   ", frame, total_, ms);
+    std::fflush(stderr);
+  }
+  void done() {
+    if (enabled_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  int total_;
+  bool enabled_;
+  std::chrono::steady_clock::time_point last_{};
+};
+
+int run(const ClothArgs& args) {
+  if (auto error = args.grid.validate()) return report_error(error->message);
+  if (!std::isfinite(args.dt) || args.dt <= 0.0) {
+    return report_error("--dt must be a positive finite number of seconds, got " + format_number(args.dt));
+  }
+  if (args.frames < 1 || args.frames > kMaxFrames) {
+    return report_error("--frames must be between 1 and " + std::to_string(kMaxFrames) + ", got " +
+                        std::to_string(args.frames));
+  }
+  const auto integrator = parse_integrator(args.integrator);
+  if (!integrator) {
+    return report_error("unknown integrator '" + args.integrator + "' (expected one of: " +
+                        integrator_names() + ")");
+  }
+  SimulationOptions options;
+  options.integrator = *integrator;
+  options.substeps = args.substeps;
+  options.implicit.tolerance = args.tolerance;
+  auto sim = ClothSimulator::create(make_grid_cloth(args.grid), options);
+  if (!sim) return report_error(sim.error().message);
+
+  const std::filesystem::path out(args.out);
+  std::optional<Pc2Writer> cache;
+  if (!args.out.empty()) {
+    if (auto ok = ensure_output_directory(out); !ok) return report_error(ok.error().message);
+    auto opened = Pc2Writer::open(out / "cloth.pc2", sim->model().particle_count());
+    if (!opened) return report_error(opened.error().message);
+    cache.emplace(std::move(*opened));
+    if (auto ok = cache->add_frame(sim->state().positions); !ok) return report_error(ok.error().message);
+  }
+
+  std::vector<StepReport> steps;
+  steps.reserve(static_cast<std::size_t>(args.frames));
+  ProgressLine progress(args.frames);
+  std::optional<std::string> divergence;
+  for (int frame = 1; frame <= args.frames; ++frame) {
+    auto report = sim->step(args.dt);
+    if (!report) {
+      divergence = report.error().message;
+      break;
+    }
+    steps.push_back(std::move(*report));
+    if (cache) {
+      if (auto ok = cache->add_frame(sim->state().positions); !ok) return report_error(ok.error().message);
+    }
+    progress.update(frame, steps.back().ms);
+  }
+  progress.done();
+
+  const ClothRunInfo info{std::string(to_string(*integrator)), args.grid.cells,
+                          sim->model().particle_count(), sim->model().spring_count(), args.dt,
+                          options.effective_substeps(), args.grid.mass, args.grid.stiffness,
+                          args.grid.damping, args.grid.gravity, args.tolerance, divergence};
+  if (cache) {
+    // A diverged run keeps its metrics (where and how it failed) but no animation files.
+    if (auto ok = write_file_atomic(out / "metrics.json", cloth_metrics_json(info, steps)); !ok) {
+      return report_error(ok.error().message);
+    }
+    if (divergence) return report_error(*divergence);
+    if (auto ok = cache->finish(); !ok) return report_error(ok.error().message);
+    const auto built = build_cloth(make_grid_cloth(args.grid));  // the rest mesh
+    if (auto ok = write_file_atomic(out / "cloth.obj", cloth_obj(built->model, built->state)); !ok) {
+      return report_error(ok.error().message);
+    }
+  }
+  if (divergence) return report_error(*divergence);
+
+  const ClothRunSummary s = summarize(steps);
+  std::printf("%-15s %6s %9s %7s %12s %12s %10s %9s %13s\n", "integrator", "frames", "particles",
+              "springs", "ms/step med", "newton mean", "cg mean", "converged", "final energy");
+  std::printf("%-15s %6d %9d %7d %12.3f %12.2f %10.1f %8.1f%% %13.6g\n", info.integrator.c_str(),
+              s.frames, info.particles, info.springs, s.ms_per_step_median,
+              s.newton_iterations_mean, s.linear_iterations_mean, 100.0 * s.converged_fraction,
+              s.final_energy);
+  if (!args.out.empty()) {
+    std::printf("wrote metrics.json, cloth.obj, cloth.pc2 (%d frames) to %s\n", s.frames + 1,
+                args.out.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> add_cloth_command(CLI::App& app) {
+  auto args = std::make_shared<ClothArgs>();
+  CLI::App* cloth = app.add_subcommand(
+      "cloth", "Simulates the lab's mass-spring cloth (an (N+1) x (N+1) grid pinned at two "
+               "corners) and reports what each step did; --out writes metrics and an animation "
+               "Blender opens (cloth.obj + cloth.pc2 for the Mesh Cache modifier).");
+  cloth->add_option("--grid", args->grid.cells, "Cells per side N (N + 1 particles per side)")
+      ->capture_default_str();
+  cloth->add_option("--frames", args->frames, "Steps to simulate")->capture_default_str();
+  cloth->add_option("--dt", args->dt, "Seconds per step (the frame's duration)")->capture_default_str();
+  cloth->add_option("--integrator", args->integrator, "One of: " + integrator_names())
+      ->capture_default_str();
+  cloth->add_option("--substeps", args->substeps,
+                    "Substeps per step; 0 = the integrator's default (explicit 1000, implicit 1)")
+      ->capture_default_str();
+  cloth->add_option("--mass", args->grid.mass, "Mass per particle (> 0; lab range 0.5..10)")
+      ->capture_default_str();
+  cloth->add_option("--stiffness", args->grid.stiffness, "Spring stiffness (> 0; lab range 10..300)")
+      ->capture_default_str();
+  cloth->add_option("--damping", args->grid.damping, "Spring damping (>= 0; lab range 0.1..10)")
+      ->capture_default_str();
+  cloth->add_option("--gravity", args->grid.gravity, "Gravity along -y (lab range 0.1..1)")
+      ->capture_default_str();
+  cloth->add_option("--tolerance", args->tolerance,
+                    "Newton stops when the gradient norm is this fraction of its start (0..1)")
+      ->capture_default_str();
+  cloth->add_option("--out", args->out,
+                    "Folder for metrics.json, cloth.obj and cloth.pc2 (created if needed)");
+  return [args] { return run(*args); };
+}
+
+}  // namespace animkit::cli

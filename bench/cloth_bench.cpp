@@ -1,0 +1,87 @@
+// Cost of one implicit Euler step of the lab's cloth (n x n grids, lab parameters and stiffness
+// 1e4), each step solved until the gradient norm is 1e-6 of its starting value: animkit's
+// integrators against the straightforward float version (triplets and a fresh SimplicialLLT
+// at every Newton iteration), in the same binary. Prints the ratios at the end.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "animkit/cloth/cloth_simulator.h"
+#include "animkit/cloth/grid_cloth.h"
+#include "lab_float_cloth.h"
+#include "ratio_reporter.h"
+
+namespace {
+
+using animkit::IntegratorKind;
+
+constexpr double kFrame = 1.0 / 60.0;
+constexpr int kWarmUpFrames = 30;  // start timing on a moving, deformed cloth
+
+animkit::GridClothOptions grid(benchmark::State& state) {
+  return {.cells = static_cast<int>(state.range(0)), .stiffness = static_cast<double>(state.range(1))};
+}
+
+void animkit_step(benchmark::State& state, IntegratorKind kind) {
+  auto sim = *animkit::ClothSimulator::create(animkit::make_grid_cloth(grid(state)), {kind, 0, {}});
+  for (int f = 0; f < kWarmUpFrames; ++f) (void)sim.step(kFrame);
+  double newton = 0, cg = 0, steps = 0, converged = 0;
+  for (auto _ : state) {
+    const auto report = sim.step(kFrame);
+    newton += report->newton_iterations;
+    cg += report->linear_iterations;
+    converged += report->converged ? 1 : 0;
+    ++steps;
+  }
+  state.counters["newton"] = newton / steps;
+  state.counters["cg"] = cg / steps;
+  state.counters["converged"] = converged / steps;
+  state.counters["ms_per_step"] = benchmark::Counter(steps * 1e-3, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_ImplicitPcg(benchmark::State& state) { animkit_step(state, IntegratorKind::implicit_pcg); }
+void BM_ImplicitDirect(benchmark::State& state) { animkit_step(state, IntegratorKind::implicit_direct); }
+
+void BM_LabFloatImplicit(benchmark::State& state) {
+  const auto built = *animkit::build_cloth(animkit::make_grid_cloth(grid(state)));
+  animkit::bench::LabFloatImplicitEuler lab(built.model);
+  Eigen::VectorXf x = built.state.positions.cast<float>(), v = built.state.velocities.cast<float>();
+  for (int f = 0; f < kWarmUpFrames; ++f) lab.step(x, v, static_cast<float>(kFrame), 1e-6f, 50);
+  double newton = 0, steps = 0;
+  for (auto _ : state) {
+    newton += lab.step(x, v, static_cast<float>(kFrame), 1e-6f, 50);
+    ++steps;
+  }
+  state.counters["newton"] = newton / steps;
+  state.counters["ms_per_step"] = benchmark::Counter(steps * 1e-3, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void grids(benchmark::internal::Benchmark* b) {
+  for (long stiffness : {100L, 10000L}) {
+    for (long cells : {10L, 40L, 80L, 100L}) b->Args({cells, stiffness});
+  }
+  b->ArgNames({"cells", "k"})->Unit(benchmark::kMillisecond);
+}
+
+BENCHMARK(BM_ImplicitPcg)->Apply(grids);
+BENCHMARK(BM_ImplicitDirect)->Apply(grids);
+BENCHMARK(BM_LabFloatImplicit)->Apply(grids)->MinTime(0.2);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  animkit::bench::RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  for (const char* args : {"cells:10/k:100", "cells:40/k:100", "cells:80/k:100", "cells:100/k:100",
+                           "cells:10/k:10000", "cells:40/k:10000", "cells:80/k:10000",
+                           "cells:100/k:10000"}) {
+    const std::string suffix = std::string("/") + args;
+    reporter.print_ratio("BM_LabFloatImplicit" + suffix, "BM_ImplicitPcg" + suffix, "ms_per_step",
+                         std::string("lab float LLT / animkit PCG, ") + args);
+    reporter.print_ratio("BM_ImplicitDirect" + suffix, "BM_ImplicitPcg" + suffix, "ms_per_step",
+                         std::string("animkit direct / animkit PCG, ") + args);
+  }
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,27 @@
+#pragma once
+// metrics.json of `animkit cloth`: the run's settings, a summary and every step's report.
+#include <optional>
+#include <span>
+#include <string>
+
+#include "animkit/cloth/cloth_run.h"
+#include "animkit/cloth/cloth_simulator.h"
+
+namespace animkit {
+
+struct ClothRunInfo {
+  std::string integrator;      ///< e.g. "implicit-pcg"
+  int grid = 0;                ///< cells per side (0 if not a grid)
+  int particles = 0, springs = 0;
+  double dt = 0.0;             ///< seconds per frame
+  int substeps = 1;
+  double mass = 0.0, stiffness = 0.0, damping = 0.0, gravity = 0.0, tolerance = 0.0;
+  /// Set when the run diverged: the error message (the steps are those before it).
+  std::optional<std::string> divergence;
+};
+
+/// {"frames", "particles", "springs", "integrator", "diverged", "ms_per_step": {"median",
+/// "mean"}, "newton_iterations": {"mean", "max"}, "final_energy", ..., "steps": [...]}.
+std::string cloth_metrics_json(const ClothRunInfo& info, std::span<const StepReport> steps);
+
+}  // namespace animkit

@@ -1,0 +1,52 @@
+#pragma once
+// Cloth animation files Blender opens: the rest mesh as Wavefront OBJ and every frame's
+// particle positions as a PC2 point cache (what Blender's Mesh Cache modifier reads).
+//
+// PC2 layout (little-endian): char[12] "POINTCACHE2\0", int32 version = 1, int32 points,
+// float32 start frame, float32 sample rate, int32 samples, then samples x points x 3 float32.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "animkit/cloth/cloth_model.h"
+#include "animkit/core/result.h"
+
+namespace animkit {
+
+/// The mesh as OBJ text: one `v` per particle (in particle order, which is the PC2's point
+/// order) and one `f` per triangle.
+std::string cloth_obj(const ClothModel& model, const ClothState& state);
+
+/// Streams frames into "<path>.tmp" and renames it to `path` on finish(), so the file is
+/// written whole or not at all: a writer destroyed before finish() removes its temporary.
+class Pc2Writer {
+ public:
+  static Result<Pc2Writer> open(const std::filesystem::path& path, int points);
+  Pc2Writer(Pc2Writer&& other) noexcept;
+  Pc2Writer& operator=(Pc2Writer&&) = delete;
+  ~Pc2Writer();
+
+  /// Appends one frame: 3 * points coordinates.
+  Result<void> add_frame(const Eigen::VectorXd& positions);
+  /// Writes the sample count into the header, flushes and renames into place.
+  Result<void> finish();
+
+ private:
+  Pc2Writer(std::FILE* file, std::filesystem::path path, int points);
+  std::FILE* file_ = nullptr;
+  std::filesystem::path path_;
+  int points_ = 0;
+  int samples_ = 0;
+  std::vector<float> buffer_;
+};
+
+/// A PC2 file read back: frames[k] holds 3 * points coordinates.
+struct PointCache {
+  int points = 0;
+  float start_frame = 0.0f, sample_rate = 1.0f;
+  std::vector<std::vector<float>> frames;
+};
+Result<PointCache> read_pc2(const std::filesystem::path& path);
+
+}  // namespace animkit

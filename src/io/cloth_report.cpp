@@ -1,0 +1,48 @@
+#include "animkit/io/cloth_report.h"
+
+#include <nlohmann/json.hpp>
+
+namespace animkit {
+
+std::string cloth_metrics_json(const ClothRunInfo& info, std::span<const StepReport> steps) {
+  const ClothRunSummary s = summarize(steps);
+  nlohmann::ordered_json j = {
+      {"frames", s.frames},
+      {"particles", info.particles},
+      {"springs", info.springs},
+      {"integrator", info.integrator},
+      {"diverged", info.divergence.has_value()},
+      {"ms_per_step", {{"median", s.ms_per_step_median}, {"mean", s.ms_per_step_mean}}},
+      {"newton_iterations", {{"mean", s.newton_iterations_mean}, {"max", s.newton_iterations_max}}},
+      {"linear_iterations", {{"mean", s.linear_iterations_mean}}},
+      {"line_search_steps", {{"mean", s.line_search_steps_mean}}},
+      {"converged_fraction", s.converged_fraction},
+      {"final_energy", s.final_energy},
+      {"options",
+       {{"grid", info.grid},
+        {"dt", info.dt},
+        {"substeps", info.substeps},
+        {"mass", info.mass},
+        {"stiffness", info.stiffness},
+        {"damping", info.damping},
+        {"gravity", info.gravity},
+        {"tolerance", info.tolerance}}},
+  };
+  if (info.divergence) j["divergence"] = *info.divergence;
+  nlohmann::ordered_json per_step = nlohmann::ordered_json::array();
+  for (const StepReport& r : steps) {
+    per_step.push_back({{"newton_iterations", r.newton_iterations},
+                        {"line_search_steps", r.line_search_steps},
+                        {"linear_iterations", r.linear_iterations},
+                        {"projected_iterations", r.projected_iterations},
+                        {"gradient_norm_start", r.gradient_norm_start},
+                        {"gradient_norm_end", r.gradient_norm_end},
+                        {"converged", r.converged},
+                        {"energy", r.energy},
+                        {"ms", r.ms}});
+  }
+  j["steps"] = std::move(per_step);
+  return j.dump(1) + "\n";
+}
+
+}  // namespace animkit

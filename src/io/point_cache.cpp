@@ -1,0 +1,152 @@
+#include "animkit/io/point_cache.h"
+
+#include <bit>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <sstream>
+#include <utility>
+
+#include <unistd.h>
+
+namespace animkit {
+
+static_assert(std::endian::native == std::endian::little, "PC2 files are little-endian");
+
+namespace {
+
+constexpr char kSignature[12] = "POINTCACHE2";  // with its terminating NUL: 12 bytes
+constexpr long kSampleCountOffset = 12 + 4 + 4 + 4 + 4;
+
+struct Pc2Header {
+  char signature[12];
+  std::int32_t version;
+  std::int32_t points;
+  float start_frame;
+  float sample_rate;
+  std::int32_t samples;
+};
+static_assert(sizeof(Pc2Header) == 32);
+
+std::string io_error(const std::filesystem::path& path, const char* what) {
+  return std::string("cannot ") + what + " " + path.string() + ": " + std::strerror(errno);
+}
+
+}  // namespace
+
+std::string cloth_obj(const ClothModel& model, const ClothState& state) {
+  std::ostringstream obj;
+  obj.precision(9);
+  obj << "# animkit cloth: " << model.particle_count() << " particles, " << model.triangles.size()
+      << " triangles; vertex order = cloth.pc2 point order\n";
+  for (int i = 0; i < model.particle_count(); ++i) {
+    const Vec3 p = state.position(i);
+    obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  }
+  for (const auto& t : model.triangles) {
+    obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+  }
+  return obj.str();
+}
+
+Pc2Writer::Pc2Writer(std::FILE* file, std::filesystem::path path, int points)
+    : file_(file), path_(std::move(path)), points_(points), buffer_(3 * static_cast<std::size_t>(points)) {}
+
+Pc2Writer::Pc2Writer(Pc2Writer&& other) noexcept
+    : file_(std::exchange(other.file_, nullptr)),
+      path_(std::move(other.path_)),
+      points_(other.points_),
+      samples_(other.samples_),
+      buffer_(std::move(other.buffer_)) {}
+
+Pc2Writer::~Pc2Writer() {
+  if (file_ == nullptr) return;
+  std::fclose(file_);
+  std::filesystem::path tmp = path_;
+  tmp += ".tmp";
+  std::remove(tmp.c_str());  // never finished: leave nothing half-written behind
+}
+
+Result<Pc2Writer> Pc2Writer::open(const std::filesystem::path& path, int points) {
+  std::filesystem::path tmp = path;
+  tmp += ".tmp";
+  std::FILE* file = std::fopen(tmp.c_str(), "wb");
+  if (file == nullptr) return fail(io_error(path, "write"));
+  Pc2Header header{};
+  std::memcpy(header.signature, kSignature, sizeof kSignature);
+  header.version = 1;
+  header.points = points;
+  header.start_frame = 0.0f;
+  header.sample_rate = 1.0f;
+  header.samples = 0;  // patched by finish()
+  Pc2Writer writer(file, path, points);
+  if (std::fwrite(&header, sizeof header, 1, file) != 1) return fail(io_error(path, "write"));
+  return writer;
+}
+
+Result<void> Pc2Writer::add_frame(const Eigen::VectorXd& positions) {
+  for (std::size_t i = 0; i < buffer_.size(); ++i) {
+    buffer_[i] = static_cast<float>(positions[static_cast<Eigen::Index>(i)]);
+  }
+  if (std::fwrite(buffer_.data(), sizeof(float), buffer_.size(), file_) != buffer_.size()) {
+    return fail(io_error(path_, "write"));
+  }
+  ++samples_;
+  return {};
+}
+
+Result<void> Pc2Writer::finish() {
+  const std::int32_t samples = samples_;
+  const bool ok = std::fseek(file_, kSampleCountOffset, SEEK_SET) == 0 &&
+                  std::fwrite(&samples, sizeof samples, 1, file_) == 1 &&
+                  std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
+  const int saved = errno;
+  const bool closed = std::fclose(file_) == 0;
+  file_ = nullptr;
+  std::filesystem::path tmp = path_;
+  tmp += ".tmp";
+  if (!ok || !closed) {
+    std::remove(tmp.c_str());
+    errno = saved;
+    return fail(io_error(path_, "write"));
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path_, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    return fail("cannot write " + path_.string() + ": " + ec.message());
+  }
+  return {};
+}
+
+Result<PointCache> read_pc2(const std::filesystem::path& path) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) return fail(io_error(path, "read"));
+  Pc2Header header{};
+  PointCache cache;
+  const bool has_header = std::fread(&header, sizeof header, 1, file) == 1;
+  std::string problem;
+  if (!has_header || std::memcmp(header.signature, kSignature, sizeof kSignature) != 0) {
+    problem = "is not a PC2 point cache (no POINTCACHE2 header)";
+  } else if (header.points < 0 || header.samples < 0) {
+    problem = "has a negative point or sample count";
+  } else {
+    cache.points = header.points;
+    cache.start_frame = header.start_frame;
+    cache.sample_rate = header.sample_rate;
+    const std::size_t count = 3 * static_cast<std::size_t>(header.points);
+    for (int s = 0; s < header.samples && problem.empty(); ++s) {
+      std::vector<float> frame(count);
+      if (std::fread(frame.data(), sizeof(float), count, file) != count) {
+        problem = "is truncated: frame " + std::to_string(s) + " of " +
+                  std::to_string(header.samples) + " is incomplete";
+      }
+      cache.frames.push_back(std::move(frame));
+    }
+  }
+  std::fclose(file);
+  if (!problem.empty()) return fail(path.string() + " " + problem);
+  return cache;
+}
+
+}  // namespace animkit
