@@ -19,7 +19,8 @@ constexpr double kFrame = 1.0 / 60.0;
 constexpr int kWarmUpFrames = 30;  // start timing on a moving, deformed cloth
 
 animkit::GridClothOptions grid(benchmark::State& state) {
-  return {.cells = static_cast<int>(state.range(0)), .stiffness = static_cast<double>(state.range(1))};
+  return {.cells = static_cast<int>(state.range(0)),
+          .stiffness = static_cast<double>(state.range(1))};
 }
 
 void animkit_step(benchmark::State& state, IntegratorKind kind) {
@@ -36,11 +37,16 @@ void animkit_step(benchmark::State& state, IntegratorKind kind) {
   state.counters["newton"] = newton / steps;
   state.counters["cg"] = cg / steps;
   state.counters["converged"] = converged / steps;
-  state.counters["ms_per_step"] = benchmark::Counter(steps * 1e-3, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["ms_per_step"] =
+      benchmark::Counter(steps * 1e-3, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void BM_ImplicitPcg(benchmark::State& state) { animkit_step(state, IntegratorKind::implicit_pcg); }
-void BM_ImplicitDirect(benchmark::State& state) { animkit_step(state, IntegratorKind::implicit_direct); }
+void BM_ImplicitPcg(benchmark::State& state) {
+  animkit_step(state, IntegratorKind::implicit_pcg);
+}
+void BM_ImplicitDirect(benchmark::State& state) {
+  animkit_step(state, IntegratorKind::implicit_direct);
+}
 
 void BM_LabFloatImplicit(benchmark::State& state) {
   const auto built = *animkit::build_cloth(animkit::make_grid_cloth(grid(state)));
@@ -53,7 +59,8 @@ void BM_LabFloatImplicit(benchmark::State& state) {
     ++steps;
   }
   state.counters["newton"] = newton / steps;
-  state.counters["ms_per_step"] = benchmark::Counter(steps * 1e-3, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["ms_per_step"] =
+      benchmark::Counter(steps * 1e-3, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void grids(benchmark::internal::Benchmark* b) {
@@ -73,9 +80,9 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   animkit::bench::RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  for (const char* args : {"cells:10/k:100", "cells:40/k:100", "cells:80/k:100", "cells:100/k:100",
-                           "cells:10/k:10000", "cells:40/k:10000", "cells:80/k:10000",
-                           "cells:100/k:10000"}) {
+  for (const char* args :
+       {"cells:10/k:100", "cells:40/k:100", "cells:80/k:100", "cells:100/k:100", "cells:10/k:10000",
+        "cells:40/k:10000", "cells:80/k:10000", "cells:100/k:10000"}) {
     const std::string suffix = std::string("/") + args;
     reporter.print_ratio("BM_LabFloatImplicit" + suffix, "BM_ImplicitPcg" + suffix, "ms_per_step",
                          std::string("lab float LLT / animkit PCG, ") + args);

@@ -9,7 +9,9 @@ using Eigen::Vector3f;
 using Mat3f = Eigen::Matrix3f;
 
 namespace {
-Vector3f at(const Eigen::VectorXf& v, int i) { return v.segment<3>(3 * i); }
+Vector3f at(const Eigen::VectorXf& v, int i) {
+  return v.segment<3>(3 * i);
+}
 }  // namespace
 
 LabFloatImplicitEuler::LabFloatImplicitEuler(const ClothModel& model)
@@ -27,7 +29,8 @@ float LabFloatImplicitEuler::objective(const Eigen::VectorXf& x) const {
     const float q = (at(x, a) - at(x_start_, a) - at(x, b) + at(x_start_, b)).dot(axis_[s]);
     damping += q * q;
   }
-  return inertia / (2 * h_ * h_) + elastic + static_cast<float>(model_.damping) / (2 * h_) * damping;
+  return inertia / (2 * h_ * h_) + elastic +
+         static_cast<float>(model_.damping) / (2 * h_) * damping;
 }
 
 void LabFloatImplicitEuler::gradient(const Eigen::VectorXf& x, Eigen::VectorXf& g) const {
@@ -40,7 +43,8 @@ void LabFloatImplicitEuler::gradient(const Eigen::VectorXf& x, Eigen::VectorXf& 
     const Vector3f d = at(x, a) - at(x, b);
     const float l = d.norm();
     const float q = (d - at(x_start_, a) + at(x_start_, b)).dot(axis_[s]);
-    const Vector3f f = static_cast<float>(model_.stiffness[s]) * (l - static_cast<float>(model_.rest_length[s])) / l * d +
+    const Vector3f f = static_cast<float>(model_.stiffness[s]) *
+                           (l - static_cast<float>(model_.rest_length[s])) / l * d +
                        c * q * axis_[s];
     g.segment<3>(3 * a) += f;
     g.segment<3>(3 * b) -= f;
@@ -57,8 +61,10 @@ int LabFloatImplicitEuler::step(Eigen::VectorXf& x, Eigen::VectorXf& v, float h,
   x_start_ = x;
   y_ = x + h * v;
   for (int i = 0; i < n; ++i) {
-    if (model_.pinned[i]) y_.segment<3>(3 * i) = at(x, i);
-    else y_[3 * i + 1] -= h * h * static_cast<float>(model_.gravity);
+    if (model_.pinned[i])
+      y_.segment<3>(3 * i) = at(x, i);
+    else
+      y_[3 * i + 1] -= h * h * static_cast<float>(model_.gravity);
   }
   for (int s = 0; s < model_.spring_count(); ++s) {
     axis_[s] = (at(x, model_.springs[s][0]) - at(x, model_.springs[s][1])).normalized();
@@ -80,7 +86,8 @@ int LabFloatImplicitEuler::step(Eigen::VectorXf& x, Eigen::VectorXf& v, float h,
       const float l = d.norm();
       const Vector3f u = d / l;
       const float t = std::max(0.0f, 1.0f - static_cast<float>(model_.rest_length[s]) / l);
-      const Mat3f block = static_cast<float>(model_.stiffness[s]) * (u * u.transpose() + t * (Mat3f::Identity() - u * u.transpose())) +
+      const Mat3f block = static_cast<float>(model_.stiffness[s]) *
+                              (u * u.transpose() + t * (Mat3f::Identity() - u * u.transpose())) +
                           static_cast<float>(model_.damping) / h * axis_[s] * axis_[s].transpose();
       for (int r = 0; r < 3; ++r) {
         for (int c = 0; c < 3; ++c) {

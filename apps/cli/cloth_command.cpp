@@ -37,7 +37,8 @@ struct ClothArgs {
 
 std::string integrator_names() {
   std::string names;
-  for (IntegratorKind k : all_integrators()) names += (names.empty() ? "" : ", ") + std::string(to_string(k));
+  for (IntegratorKind k : all_integrators())
+    names += (names.empty() ? "" : ", ") + std::string(to_string(k));
   return names;
 }
 
@@ -66,7 +67,8 @@ class ProgressLine {
 int run(const ClothArgs& args) {
   if (auto error = args.grid.validate()) return report_error(error->message);
   if (!std::isfinite(args.dt) || args.dt <= 0.0) {
-    return report_error("--dt must be a positive finite number of seconds, got " + format_number(args.dt));
+    return report_error("--dt must be a positive finite number of seconds, got " +
+                        format_number(args.dt));
   }
   if (args.frames < 1 || args.frames > kMaxFrames) {
     return report_error("--frames must be between 1 and " + std::to_string(kMaxFrames) + ", got " +
@@ -74,8 +76,8 @@ int run(const ClothArgs& args) {
   }
   const auto integrator = parse_integrator(args.integrator);
   if (!integrator) {
-    return report_error("unknown integrator '" + args.integrator + "' (expected one of: " +
-                        integrator_names() + ")");
+    return report_error("unknown integrator '" + args.integrator +
+                        "' (expected one of: " + integrator_names() + ")");
   }
   SimulationOptions options;
   options.integrator = *integrator;
@@ -91,7 +93,8 @@ int run(const ClothArgs& args) {
     auto opened = Pc2Writer::open(out / "cloth.pc2", sim->model().particle_count());
     if (!opened) return report_error(opened.error().message);
     cache.emplace(std::move(*opened));
-    if (auto ok = cache->add_frame(sim->state().positions); !ok) return report_error(ok.error().message);
+    if (auto ok = cache->add_frame(sim->state().positions); !ok)
+      return report_error(ok.error().message);
   }
 
   std::vector<StepReport> steps;
@@ -106,16 +109,25 @@ int run(const ClothArgs& args) {
     }
     steps.push_back(std::move(*report));
     if (cache) {
-      if (auto ok = cache->add_frame(sim->state().positions); !ok) return report_error(ok.error().message);
+      if (auto ok = cache->add_frame(sim->state().positions); !ok)
+        return report_error(ok.error().message);
     }
     progress.update(frame, steps.back().ms);
   }
   progress.done();
 
-  const ClothRunInfo info{std::string(to_string(*integrator)), args.grid.cells,
-                          sim->model().particle_count(), sim->model().spring_count(), args.dt,
-                          options.effective_substeps(), args.grid.mass, args.grid.stiffness,
-                          args.grid.damping, args.grid.gravity, args.tolerance, divergence};
+  const ClothRunInfo info{std::string(to_string(*integrator)),
+                          args.grid.cells,
+                          sim->model().particle_count(),
+                          sim->model().spring_count(),
+                          args.dt,
+                          options.effective_substeps(),
+                          args.grid.mass,
+                          args.grid.stiffness,
+                          args.grid.damping,
+                          args.grid.gravity,
+                          args.tolerance,
+                          divergence};
   if (cache) {
     // A diverged run keeps its metrics (where and how it failed) but no animation files.
     if (auto ok = write_file_atomic(out / "metrics.json", cloth_metrics_json(info, steps)); !ok) {
@@ -124,7 +136,8 @@ int run(const ClothArgs& args) {
     if (divergence) return report_error(*divergence);
     if (auto ok = cache->finish(); !ok) return report_error(ok.error().message);
     const auto built = build_cloth(make_grid_cloth(args.grid));  // the rest mesh
-    if (auto ok = write_file_atomic(out / "cloth.obj", cloth_obj(built->model, built->state)); !ok) {
+    if (auto ok = write_file_atomic(out / "cloth.obj", cloth_obj(built->model, built->state));
+        !ok) {
       return report_error(ok.error().message);
     }
   }
@@ -149,28 +162,33 @@ int run(const ClothArgs& args) {
 std::function<int()> add_cloth_command(CLI::App& app) {
   auto args = std::make_shared<ClothArgs>();
   CLI::App* cloth = app.add_subcommand(
-      "cloth", "Simulates the lab's mass-spring cloth (an (N+1) x (N+1) grid pinned at two "
-               "corners) and reports what each step did; --out writes metrics and an animation "
-               "Blender opens (cloth.obj + cloth.pc2 for the Mesh Cache modifier).");
+      "cloth",
+      "Simulates the lab's mass-spring cloth (an (N+1) x (N+1) grid pinned at two "
+      "corners) and reports what each step did; --out writes metrics and an animation "
+      "Blender opens (cloth.obj + cloth.pc2 for the Mesh Cache modifier).");
   cloth->add_option("--grid", args->grid.cells, "Cells per side N (N + 1 particles per side)")
       ->capture_default_str();
   cloth->add_option("--frames", args->frames, "Steps to simulate")->capture_default_str();
-  cloth->add_option("--dt", args->dt, "Seconds per step (the frame's duration)")->capture_default_str();
+  cloth->add_option("--dt", args->dt, "Seconds per step (the frame's duration)")
+      ->capture_default_str();
   cloth->add_option("--integrator", args->integrator, "One of: " + integrator_names())
       ->capture_default_str();
-  cloth->add_option("--substeps", args->substeps,
-                    "Substeps per step; 0 = the integrator's default (explicit 1000, implicit 1)")
+  cloth
+      ->add_option("--substeps", args->substeps,
+                   "Substeps per step; 0 = the integrator's default (explicit 1000, implicit 1)")
       ->capture_default_str();
   cloth->add_option("--mass", args->grid.mass, "Mass per particle (> 0; lab range 0.5..10)")
       ->capture_default_str();
-  cloth->add_option("--stiffness", args->grid.stiffness, "Spring stiffness (> 0; lab range 10..300)")
+  cloth
+      ->add_option("--stiffness", args->grid.stiffness, "Spring stiffness (> 0; lab range 10..300)")
       ->capture_default_str();
   cloth->add_option("--damping", args->grid.damping, "Spring damping (>= 0; lab range 0.1..10)")
       ->capture_default_str();
   cloth->add_option("--gravity", args->grid.gravity, "Gravity along -y (lab range 0.1..1)")
       ->capture_default_str();
-  cloth->add_option("--tolerance", args->tolerance,
-                    "Newton stops when the gradient norm is this fraction of its start (0..1)")
+  cloth
+      ->add_option("--tolerance", args->tolerance,
+                   "Newton stops when the gradient norm is this fraction of its start (0..1)")
       ->capture_default_str();
   cloth->add_option("--out", args->out,
                     "Folder for metrics.json, cloth.obj and cloth.pc2 (created if needed)");

@@ -4,12 +4,13 @@
 
 namespace animkit {
 
-BlockJacobiPcg::BlockJacobiPcg(int particle_count)
-    : inverse_blocks_(particle_count),
-      r_(3 * particle_count),
-      z_(3 * particle_count),
-      p_(3 * particle_count),
-      ap_(3 * particle_count) {}
+BlockJacobiPcg::BlockJacobiPcg(const ClothModel& model)
+    : model_(model),
+      inverse_blocks_(model.particle_count()),
+      r_(3 * model.particle_count()),
+      z_(3 * model.particle_count()),
+      p_(3 * model.particle_count()),
+      ap_(3 * model.particle_count()) {}
 
 void BlockJacobiPcg::apply_preconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   for (std::size_t i = 0; i < inverse_blocks_.size(); ++i) {
@@ -18,12 +19,10 @@ void BlockJacobiPcg::apply_preconditioner(const Eigen::VectorXd& r, Eigen::Vecto
   }
 }
 
-PcgResult BlockJacobiPcg::solve(const HessianPattern& a, const Eigen::VectorXd& b,
-                                Eigen::VectorXd& x, double tolerance, int max_iterations) {
-  const double* values = a.matrix.valuePtr();
+PcgResult BlockJacobiPcg::solve(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                                double tolerance, int max_iterations) {
   for (std::size_t i = 0; i < inverse_blocks_.size(); ++i) {
-    Eigen::Matrix3d block;
-    for (int k = 0; k < 9; ++k) block(k % 3, k / 3) = values[a.diagonal[i][k]];
+    const Eigen::Matrix3d& block = a.diagonal[i];
     // Mass / h^2 dominates each diagonal block, so it is invertible even with the exact
     // Hessian; should it not be, fall back to the inverse of its diagonal's magnitude.
     bool invertible = false;
@@ -45,7 +44,7 @@ PcgResult BlockJacobiPcg::solve(const HessianPattern& a, const Eigen::VectorXd& 
   double rz = r_.dot(z_);
   double r_norm = b_norm;
   while (result.iterations < max_iterations) {
-    ap_.noalias() = a.matrix * p_;
+    a.multiply(model_, p_, ap_);
     const double curvature = p_.dot(ap_);
     if (!(curvature > 0.0)) {
       result.indefinite = true;

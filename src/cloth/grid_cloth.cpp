@@ -13,7 +13,8 @@ std::optional<Error> GridClothOptions::validate() const {
     return Error{"grid must have between 1 and " + std::to_string(kMaxGridCells) +
                  " cells per side, got " + std::to_string(cells)};
   }
-  if (!positive(size)) return Error{"cloth size must be positive and finite, got " + format_number(size)};
+  if (!positive(size))
+    return Error{"cloth size must be positive and finite, got " + format_number(size)};
   if (!std::isfinite(height)) return Error{"cloth height must be finite"};
   if (!positive(mass)) return Error{"mass must be positive and finite, got " + format_number(mass)};
   if (!positive(stiffness)) {
@@ -22,7 +23,8 @@ std::optional<Error> GridClothOptions::validate() const {
   if (!std::isfinite(damping) || damping < 0.0) {
     return Error{"damping must be a finite number >= 0, got " + format_number(damping)};
   }
-  if (!std::isfinite(gravity)) return Error{"gravity must be finite, got " + format_number(gravity)};
+  if (!std::isfinite(gravity))
+    return Error{"gravity must be finite, got " + format_number(gravity)};
   return std::nullopt;
 }
 

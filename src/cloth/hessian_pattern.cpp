@@ -33,6 +33,22 @@ HessianPattern::BlockOffsets find_block(const SparseMatrix& m, int row_particle,
 
 }  // namespace
 
+void HessianPattern::assign(const BlockHessian& blocks) {
+  double* values = matrix.valuePtr();
+  // Every stored entry belongs to exactly one diagonal block or to the (a,b)/(b,a) blocks of
+  // the springs joining a and b, so setting the diagonal and then adding couplings covers all.
+  std::fill(values, values + matrix.nonZeros(), 0.0);
+  for (std::size_t i = 0; i < diagonal.size(); ++i) {
+    for (int k = 0; k < 9; ++k) values[diagonal[i][k]] = blocks.diagonal[i](k % 3, k / 3);
+  }
+  for (std::size_t s = 0; s < off_diagonal.size(); ++s) {
+    if (off_diagonal[s][0][0] < 0) continue;  // touches a pinned particle: no coupling
+    for (const BlockOffsets& offsets : off_diagonal[s]) {
+      for (int k = 0; k < 9; ++k) values[offsets[k]] -= blocks.coupling[s](k % 3, k / 3);
+    }
+  }
+}
+
 HessianPattern build_hessian_pattern(const ClothModel& model) {
   const int n = model.particle_count();
   std::vector<Triplet> triplets;

@@ -101,14 +101,11 @@ void IncrementalPotential::gradient(const Eigen::VectorXd& x, Eigen::VectorXd& g
   }
 }
 
-void IncrementalPotential::hessian(const Eigen::VectorXd& x, HessianPattern& pattern,
+void IncrementalPotential::hessian(const Eigen::VectorXd& x, BlockHessian& blocks,
                                    bool projected) const {
-  double* values = pattern.matrix.valuePtr();
-  std::fill(values, values + pattern.matrix.nonZeros(), 0.0);
   const double inv_h2 = 1.0 / (h_ * h_);
   for (int i = 0; i < model_.particle_count(); ++i) {
-    const double diagonal = model_.pinned[i] ? 1.0 : model_.mass[i] * inv_h2;
-    HessianPattern::add(values, pattern.diagonal[i], Mat3::Identity() * diagonal);
+    blocks.diagonal[i] = Mat3::Identity() * (model_.pinned[i] ? 1.0 : model_.mass[i] * inv_h2);
   }
   const double c = model_.damping / h_;
   for (int s = 0; s < model_.spring_count(); ++s) {
@@ -117,10 +114,15 @@ void IncrementalPotential::hessian(const Eigen::VectorXd& x, HessianPattern& pat
     const Mat3 k = spring_hessian_block(at(x, a), at(x, b), model_.stiffness[s],
                                         model_.rest_length[s], projected) +
                    c * (u * u.transpose());
-    if (!model_.pinned[a]) HessianPattern::add(values, pattern.diagonal[a], k);
-    if (!model_.pinned[b]) HessianPattern::add(values, pattern.diagonal[b], k);
-    HessianPattern::add(values, pattern.off_diagonal[s][0], -k);
-    HessianPattern::add(values, pattern.off_diagonal[s][1], -k);
+    const bool free_a = !model_.pinned[a], free_b = !model_.pinned[b];
+    if (free_a) blocks.diagonal[a] += k;
+    if (free_b) blocks.diagonal[b] += k;
+    // A pinned end is not an unknown: the spring then only stiffens the free end.
+    if (free_a && free_b) {
+      blocks.coupling[s] = k;
+    } else {
+      blocks.coupling[s].setZero();
+    }
   }
 }
 

@@ -1,13 +1,13 @@
 #include "animkit/io/point_cache.h"
 
+#include <unistd.h>
+
 #include <bit>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <sstream>
 #include <utility>
-
-#include <unistd.h>
 
 namespace animkit {
 
@@ -50,7 +50,10 @@ std::string cloth_obj(const ClothModel& model, const ClothState& state) {
 }
 
 Pc2Writer::Pc2Writer(std::FILE* file, std::filesystem::path path, int points)
-    : file_(file), path_(std::move(path)), points_(points), buffer_(3 * static_cast<std::size_t>(points)) {}
+    : file_(file),
+      path_(std::move(path)),
+      points_(points),
+      buffer_(3 * static_cast<std::size_t>(points)) {}
 
 Pc2Writer::Pc2Writer(Pc2Writer&& other) noexcept
     : file_(std::exchange(other.file_, nullptr)),
@@ -98,8 +101,8 @@ Result<void> Pc2Writer::add_frame(const Eigen::VectorXd& positions) {
 Result<void> Pc2Writer::finish() {
   const std::int32_t samples = samples_;
   const bool ok = std::fseek(file_, kSampleCountOffset, SEEK_SET) == 0 &&
-                  std::fwrite(&samples, sizeof samples, 1, file_) == 1 &&
-                  std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
+                  std::fwrite(&samples, sizeof samples, 1, file_) == 1 && std::fflush(file_) == 0 &&
+                  ::fsync(::fileno(file_)) == 0;
   const int saved = errno;
   const bool closed = std::fclose(file_) == 0;
   file_ = nullptr;

@@ -1,11 +1,12 @@
 #pragma once
-// Preconditioned conjugate gradients on the assembled Hessian, with the inverses of its 3x3
-// diagonal blocks as preconditioner (one block per particle: it captures each particle's
-// mass and the stiffness of its springs in every direction). Workspace sized once.
+// Preconditioned conjugate gradients on the block Hessian (matrix-free: it is applied spring
+// by spring), with the inverses of its 3x3 diagonal blocks as preconditioner (one block per
+// particle: each particle's mass and the stiffness of its springs in every direction).
+// Workspace sized once.
 #include <Eigen/Core>
 #include <vector>
 
-#include "animkit/cloth/hessian_pattern.h"
+#include "animkit/cloth/block_hessian.h"
 
 namespace animkit {
 
@@ -21,16 +22,17 @@ struct PcgResult {
 
 class BlockJacobiPcg {
  public:
-  explicit BlockJacobiPcg(int particle_count);
+  explicit BlockJacobiPcg(const ClothModel& model);
 
   /// Solves A x = b for the symmetric matrix in `a`, from x = 0, until |b - A x| <= tolerance
   /// |b|, `max_iterations`, or a direction of non-positive curvature (see PcgResult).
-  PcgResult solve(const HessianPattern& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+  PcgResult solve(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                   double tolerance, int max_iterations);
 
  private:
   void apply_preconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
 
+  const ClothModel& model_;
   std::vector<Eigen::Matrix3d> inverse_blocks_;
   Eigen::VectorXd r_, z_, p_, ap_;
 };

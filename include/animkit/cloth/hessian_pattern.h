@@ -1,11 +1,13 @@
 #pragma once
-// The sparsity pattern of the implicit step's Hessian, built once per model. Each Newton
-// iteration then writes values straight into the compressed matrix through precomputed
-// offsets: no triplets, no re-sorting, and a direct solver's symbolic analysis done once.
+// The implicit step's Hessian as a compressed sparse matrix, for the direct solver. The
+// sparsity pattern is built once per model; each Newton iteration then writes the block
+// Hessian's values straight into it through precomputed offsets: no triplets, no re-sorting,
+// and the direct solver's symbolic analysis done once.
 #include <Eigen/SparseCore>
 #include <array>
 #include <vector>
 
+#include "animkit/cloth/block_hessian.h"
 #include "animkit/cloth/cloth_model.h"
 
 namespace animkit {
@@ -24,11 +26,8 @@ struct HessianPattern {
   std::vector<BlockOffsets> diagonal;                     ///< per particle
   std::vector<std::array<BlockOffsets, 2>> off_diagonal;  ///< per spring: (a,b) and (b,a)
 
-  /// Adds `block` (or its transpose, which is the same for symmetric blocks) at `offsets`.
-  static void add(double* values, const BlockOffsets& offsets, const Eigen::Matrix3d& block) {
-    if (offsets[0] < 0) return;
-    for (int k = 0; k < 9; ++k) values[offsets[k]] += block(k % 3, k / 3);
-  }
+  /// Writes the block Hessian's values into `matrix`.
+  void assign(const BlockHessian& blocks);
 };
 
 /// Builds the pattern of `model`'s Hessian (all values zero).

@@ -6,9 +6,9 @@
 #include <memory>
 #include <optional>
 
+#include "animkit/cloth/block_hessian.h"
 #include "animkit/cloth/block_jacobi_pcg.h"
 #include "animkit/cloth/cloth_model.h"
-#include "animkit/cloth/hessian_pattern.h"
 #include "animkit/cloth/incremental_potential.h"
 #include "animkit/cloth/step_report.h"
 #include "animkit/core/result.h"
@@ -71,7 +71,7 @@ class ImplicitEuler {
   const ClothModel& model_;
   ImplicitOptions options_;
   IncrementalPotential potential_;
-  HessianPattern hessian_;
+  BlockHessian hessian_;
   BlockJacobiPcg pcg_;
   std::unique_ptr<DirectSolver> direct_;
   double spring_force_scale_ = 0.0;  // |(k L) over springs|, for the rounding floor

@@ -12,8 +12,8 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "animkit/cloth/block_hessian.h"
 #include "animkit/cloth/cloth_model.h"
-#include "animkit/cloth/hessian_pattern.h"
 
 namespace animkit {
 
@@ -37,10 +37,10 @@ class IncrementalPotential {
   double difference(const Eigen::VectorXd& x, const Eigen::VectorXd& step) const;
   /// grad g(x) into `gradient` (sized 3N; pinned entries zero).
   void gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const;
-  /// The Hessian of g at x, written into `pattern.matrix`'s values. `projected` keeps each
-  /// spring block positive semidefinite (see spring_energy.h), so the matrix is SPD; the exact
-  /// one may be indefinite where springs are compressed.
-  void hessian(const Eigen::VectorXd& x, HessianPattern& pattern, bool projected) const;
+  /// The Hessian of g at x, by blocks. `projected` keeps each spring block positive
+  /// semidefinite (see spring_energy.h), so the matrix is SPD; the exact one may be indefinite
+  /// where springs are compressed.
+  void hessian(const Eigen::VectorXd& x, BlockHessian& blocks, bool projected) const;
 
  private:
   const ClothModel& model_;

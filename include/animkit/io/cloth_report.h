@@ -10,10 +10,10 @@
 namespace animkit {
 
 struct ClothRunInfo {
-  std::string integrator;      ///< e.g. "implicit-pcg"
-  int grid = 0;                ///< cells per side (0 if not a grid)
+  std::string integrator;  ///< e.g. "implicit-pcg"
+  int grid = 0;            ///< cells per side (0 if not a grid)
   int particles = 0, springs = 0;
-  double dt = 0.0;             ///< seconds per frame
+  double dt = 0.0;  ///< seconds per frame
   int substeps = 1;
   double mass = 0.0, stiffness = 0.0, damping = 0.0, gravity = 0.0, tolerance = 0.0;
   /// Set when the run diverged: the error message (the steps are those before it).

@@ -1,0 +1,25 @@
+#pragma once
+// The implicit step's Hessian stored by blocks, the form matrix-free solvers use: per particle
+// its 3x3 diagonal block, per spring the 3x3 block K its two particles share (the matrix holds
+// +K in both diagonal blocks and -K at (a, b) and (b, a)). Building it writes two arrays in
+// order; multiplying by it reads them in order. No sparse index structure, no scattered writes.
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "animkit/cloth/cloth_model.h"
+
+namespace animkit {
+
+struct BlockHessian {
+  std::vector<Eigen::Matrix3d> diagonal;  ///< per particle (identity for pinned particles)
+  std::vector<Eigen::Matrix3d> coupling;  ///< per spring; zero when an end is pinned
+
+  explicit BlockHessian(const ClothModel& model)
+      : diagonal(model.particle_count()), coupling(model.springs.size()) {}
+
+  /// y = A p for the model's springs.
+  void multiply(const ClothModel& model, const Eigen::VectorXd& p, Eigen::VectorXd& y) const;
+};
+
+}  // namespace animkit
