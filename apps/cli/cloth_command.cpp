@@ -25,16 +25,6 @@ namespace {
 
 constexpr int kMaxFrames = 1'000'000;
 
-struct ClothArgs {
-  GridClothOptions grid;
-  int frames = 300;
-  double dt = 1.0 / 60.0;
-  std::string integrator{to_string(SimulationOptions{}.integrator)};
-  int substeps = 0;
-  double tolerance = ImplicitOptions{}.tolerance;
-  std::string out;
-};
-
 std::string integrator_names() {
   std::string names;
   for (IntegratorKind k : all_integrators())
@@ -64,7 +54,9 @@ class ProgressLine {
   std::chrono::steady_clock::time_point last_{};
 };
 
-int run(const ClothArgs& args) {
+}  // namespace
+
+int run_cloth(const ClothArgs& args) {
   if (auto error = args.grid.validate()) return report_error(error->message);
   if (!std::isfinite(args.dt) || args.dt <= 0.0) {
     return report_error("--dt must be a positive finite number of seconds, got " +
@@ -157,8 +149,6 @@ int run(const ClothArgs& args) {
   return 0;
 }
 
-}  // namespace
-
 std::function<int()> add_cloth_command(CLI::App& app) {
   auto args = std::make_shared<ClothArgs>();
   CLI::App* cloth = app.add_subcommand(
@@ -192,7 +182,7 @@ std::function<int()> add_cloth_command(CLI::App& app) {
       ->capture_default_str();
   cloth->add_option("--out", args->out,
                     "Folder for metrics.json, cloth.obj and cloth.pc2 (created if needed)");
-  return [args] { return run(*args); };
+  return [args] { return run_cloth(*args); };
 }
 
 }  // namespace animkit::cli

@@ -1,8 +1,26 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
+
+#include "animkit/cloth/cloth_simulator.h"
+#include "animkit/cloth/grid_cloth.h"
 
 namespace animkit::cli {
+
+/// Everything `animkit cloth` is asked to do.
+struct ClothArgs {
+  GridClothOptions grid;  ///< the lab's cloth by default
+  int frames = 300;
+  double dt = 1.0 / 60.0;
+  std::string integrator{to_string(SimulationOptions{}.integrator)};
+  int substeps = 0;
+  double tolerance = ImplicitOptions{}.tolerance;
+  std::string out;  ///< empty: write no files
+};
+
+/// Runs the simulation, prints the summary table, writes the files; returns the exit code.
+int run_cloth(const ClothArgs& args);
 
 /// Registers `animkit cloth` on `app`; the returned function runs it after parsing.
 std::function<int()> add_cloth_command(CLI::App& app);

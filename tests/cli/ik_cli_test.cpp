@@ -150,6 +150,9 @@ TEST(DemoCli, DrawsEveryShapeWithBothSolvers) {
     }
   }
   EXPECT_EQ(count_lines(read_file(out / "ik" / "summary.csv")), 11);
+  for (const char* name : {"metrics.json", "cloth.obj", "cloth.pc2"}) {
+    EXPECT_TRUE(fs::exists(out / "cloth" / name)) << name;
+  }
 }
 
 }  // namespace

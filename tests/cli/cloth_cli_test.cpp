@@ -1,0 +1,127 @@
+// Behaviour tests of `animkit cloth`: the real binary, its output and files.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "../support/run_command.h"
+#include "../support/temp_files.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using animkit::testing_support::read_file;
+using animkit::testing_support::run_command;
+
+const std::string kCli = ANIMKIT_CLI_PATH;
+
+fs::path fresh_dir(const std::string& name) {
+  return animkit::testing_support::fresh_dir("cloth_cli_" + name);
+}
+
+TEST(ClothCli, WritesMetricsObjAndPointCache) {
+  const fs::path out = fresh_dir("lab");
+  const auto r = run_command(kCli + " cloth --frames 60 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto m = nlohmann::json::parse(read_file(out / "metrics.json"));
+  EXPECT_EQ(m["frames"], 60);
+  EXPECT_EQ(m["particles"], 121);
+  EXPECT_EQ(m["springs"], 618);
+  EXPECT_EQ(m["integrator"], "implicit-pcg");
+  EXPECT_EQ(m["diverged"], false);
+  EXPECT_GT(m["ms_per_step"]["median"].get<double>(), 0.0);
+  EXPECT_GE(m["newton_iterations"]["mean"].get<double>(), 1.0);
+  EXPECT_TRUE(m["final_energy"].is_number());
+  EXPECT_EQ(m["steps"].size(), 60u);
+  EXPECT_EQ(m["converged_fraction"], 1.0);
+
+  const std::string obj = read_file(out / "cloth.obj");
+  int vertices = 0, faces = 0;
+  for (std::size_t at = obj.find('\n'); at != std::string::npos; at = obj.find('\n', at + 1)) {
+    vertices += obj.compare(at + 1, 2, "v ") == 0 ? 1 : 0;
+    faces += obj.compare(at + 1, 2, "f ") == 0 ? 1 : 0;
+  }
+  EXPECT_EQ(vertices, 121);
+  EXPECT_EQ(faces, 200);
+  const std::string pc2 = read_file(out / "cloth.pc2");
+  ASSERT_GE(pc2.size(), 32u);
+  EXPECT_EQ(pc2.substr(0, 12), std::string("POINTCACHE2\0", 12));
+  std::int32_t samples = 0;
+  std::memcpy(&samples, pc2.data() + 28, 4);
+  EXPECT_EQ(samples, 61);  // the rest pose and every frame
+  EXPECT_EQ(pc2.size(), 32u + 61u * 121u * 12u);
+}
+
+TEST(ClothCli, EveryIntegratorRuns) {
+  for (const char* integrator : {"explicit", "implicit-direct", "implicit-pcg"}) {
+    const auto r = run_command(kCli + " cloth --grid 4 --frames 10 --integrator " + integrator);
+    EXPECT_EQ(r.exit_code, 0) << integrator << ": " << r.err;
+    EXPECT_NE(r.out.find(integrator), std::string::npos);
+  }
+}
+
+TEST(ClothCli, DivergedRunReportsAndWritesNoAnimation) {
+  const fs::path out = fresh_dir("diverged");
+  const auto r = run_command(kCli +
+                             " cloth --integrator explicit --substeps 1 --stiffness 1e4 "
+                             "--dt 0.0333 --frames 600 --out " +
+                             out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("animkit: error: the simulation diverged in step ", 0), 0u) << r.err;
+  EXPECT_FALSE(fs::exists(out / "cloth.pc2"));
+  EXPECT_FALSE(fs::exists(out / "cloth.pc2.tmp"));
+  EXPECT_FALSE(fs::exists(out / "cloth.obj"));
+  const auto m = nlohmann::json::parse(read_file(out / "metrics.json"));
+  EXPECT_EQ(m["diverged"], true);
+  EXPECT_EQ(m["divergence"].get<std::string>().rfind("the simulation diverged", 0), 0u);
+}
+
+struct BadCloth {
+  std::string args;
+  std::string message;
+};
+
+void PrintTo(const BadCloth& b, std::ostream* os) {
+  *os << "animkit cloth " << b.args;
+}
+
+class ClothCliBadInput : public testing::TestWithParam<BadCloth> {};
+
+TEST_P(ClothCliBadInput, OneLineOnStderrAndExitCode2) {
+  const auto r = run_command(kCli + " cloth " + GetParam().args);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("animkit: error: " + GetParam().message, 0), 0u) << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, ClothCliBadInput,
+    testing::Values(BadCloth{"--mass -1", "mass must be positive and finite, got -1"},
+                    BadCloth{"--mass nan", "mass must be positive and finite, got nan"},
+                    BadCloth{"--dt 0", "--dt must be a positive finite number of seconds, got 0"},
+                    BadCloth{"--dt -0.1", "--dt must be a positive finite number"},
+                    BadCloth{"--grid 0", "grid must have between 1 and 2000 cells per side, got 0"},
+                    BadCloth{"--stiffness 0", "stiffness must be positive and finite, got 0"},
+                    BadCloth{"--damping -1", "damping must be a finite number >= 0, got -1"},
+                    BadCloth{"--gravity inf", "gravity must be finite, got inf"},
+                    BadCloth{"--frames 0", "--frames must be between 1 and"},
+                    BadCloth{"--substeps -2", "substeps must be at least 1"},
+                    BadCloth{"--tolerance 2", "tolerance must be in (0, 1), got 2"},
+                    BadCloth{"--integrator verlet", "unknown integrator 'verlet'"},
+                    BadCloth{"--out /proc/animkit-cannot-write", "cannot create output folder"}),
+    [](const auto& param_info) { return "case" + std::to_string(param_info.index); });
+
+TEST(ClothCli, HelpExplainsEveryOption) {
+  const auto r = run_command(kCli + " cloth --help");
+  ASSERT_EQ(r.exit_code, 0);
+  for (const char* option : {"--grid", "--frames", "--dt", "--integrator", "--substeps", "--mass",
+                             "--stiffness", "--damping", "--gravity", "--tolerance", "--out"}) {
+    EXPECT_NE(r.out.find(option), std::string::npos) << option;
+  }
+}
+
+}  // namespace
