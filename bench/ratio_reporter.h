@@ -21,10 +21,12 @@ class RatioReporter : public benchmark::ConsoleReporter {
       if (!run.run_name.args.empty()) key += "/" + run.run_name.args;
       auto& counters = results_[key];
       for (const auto& [name, counter] : run.counters) counters[name] = counter.value;
+      counters["time"] = run.GetAdjustedRealTime();  // per iteration, in the run's time unit
     }
   }
 
-  /// Prints numerator / denominator of the named counter, if both benchmarks ran.
+  /// Prints numerator / denominator of the named counter ("time": real time per iteration),
+  /// if both benchmarks ran.
   void print_ratio(const std::string& numerator, const std::string& denominator,
                    const std::string& counter, const std::string& label) const {
     const auto a = results_.find(numerator), b = results_.find(denominator);
