@@ -1,7 +1,7 @@
 # The two commands of the README:
 #   make demo   installs dependencies, builds (Release) and runs the built-in demo
 #   make test   installs dependencies, builds and runs every test, then again under ASan+UBSan
-#               (a Debug build, so assertions are checked too)
+#               (a Debug build at -O1, so assertions are checked too)
 JOBS   ?= $(shell nproc)
 OUT    ?= out/demo
 CMAKE  := cmake
@@ -28,7 +28,8 @@ test-release: deps
 	cd $(RELEASE_DIR) && ctest --output-on-failure -j $(JOBS)
 
 test-sanitize: deps
-	$(CMAKE) -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=Debug -DANIMKIT_SANITIZE=ON \
+	$(CMAKE) -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
+	  -DANIMKIT_SANITIZE=ON \
 	  -DANIMKIT_BUILD_BENCHMARKS=OFF
 	$(CMAKE) --build $(SANITIZE_DIR) -j $(JOBS)
 	cd $(SANITIZE_DIR) && ctest --output-on-failure -j $(JOBS)
