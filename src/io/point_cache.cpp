@@ -1,6 +1,5 @@
 #include "animkit/io/point_cache.h"
 
-#include <unistd.h>
 
 #include <bit>
 #include <cerrno>
@@ -8,6 +7,8 @@
 #include <cstring>
 #include <sstream>
 #include <utility>
+
+#include "animkit/io/atomic_write.h"
 
 namespace animkit {
 
@@ -63,17 +64,12 @@ Pc2Writer::Pc2Writer(Pc2Writer&& other) noexcept
       buffer_(std::move(other.buffer_)) {}
 
 Pc2Writer::~Pc2Writer() {
-  if (file_ == nullptr) return;
-  std::fclose(file_);
-  std::filesystem::path tmp = path_;
-  tmp += ".tmp";
-  std::remove(tmp.c_str());  // never finished: leave nothing half-written behind
+  // Never finished: leave nothing half-written behind.
+  if (file_ != nullptr) (void)commit_temporary(file_, path_, /*ok=*/false);
 }
 
 Result<Pc2Writer> Pc2Writer::open(const std::filesystem::path& path, int points) {
-  std::filesystem::path tmp = path;
-  tmp += ".tmp";
-  std::FILE* file = std::fopen(tmp.c_str(), "wb");
+  std::FILE* file = open_temporary(path);
   if (file == nullptr) return fail(io_error(path, "write"));
   Pc2Header header{};
   std::memcpy(header.signature, kSignature, sizeof kSignature);
@@ -100,26 +96,9 @@ Result<void> Pc2Writer::add_frame(const Eigen::VectorXd& positions) {
 
 Result<void> Pc2Writer::finish() {
   const std::int32_t samples = samples_;
-  const bool ok = std::fseek(file_, kSampleCountOffset, SEEK_SET) == 0 &&
-                  std::fwrite(&samples, sizeof samples, 1, file_) == 1 && std::fflush(file_) == 0 &&
-                  ::fsync(::fileno(file_)) == 0;
-  const int saved = errno;
-  const bool closed = std::fclose(file_) == 0;
-  file_ = nullptr;
-  std::filesystem::path tmp = path_;
-  tmp += ".tmp";
-  if (!ok || !closed) {
-    std::remove(tmp.c_str());
-    errno = saved;
-    return fail(io_error(path_, "write"));
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path_, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    return fail("cannot write " + path_.string() + ": " + ec.message());
-  }
-  return {};
+  const bool patched = std::fseek(file_, kSampleCountOffset, SEEK_SET) == 0 &&
+                       std::fwrite(&samples, sizeof samples, 1, file_) == 1;
+  return commit_temporary(std::exchange(file_, nullptr), path_, patched);
 }
 
 Result<PointCache> read_pc2(const std::filesystem::path& path) {
