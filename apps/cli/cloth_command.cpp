@@ -89,6 +89,7 @@ int run_cloth(const ClothArgs& args) {
       return report_error(ok.error().message);
   }
 
+  const ClothState rest = sim->state();  // for the OBJ: the mesh as it starts
   std::vector<StepReport> steps;
   steps.reserve(static_cast<std::size_t>(args.frames));
   ProgressLine progress(args.frames);
@@ -121,15 +122,20 @@ int run_cloth(const ClothArgs& args) {
                           args.tolerance,
                           divergence};
   if (cache) {
-    // A diverged run keeps its metrics (where and how it failed) but no animation files.
-    if (auto ok = write_file_atomic(out / "metrics.json", cloth_metrics_json(info, steps)); !ok) {
-      return report_error(ok.error().message);
+    if (divergence) {
+      // A diverged run keeps its metrics (where and how it failed) and no animation: the new
+      // stream is dropped with the writer, and files of an earlier run in this folder go too,
+      // so no animation sits next to metrics it does not belong to.
+      std::filesystem::remove(out / "cloth.pc2");
+      std::filesystem::remove(out / "cloth.obj");
+    } else {
+      if (auto ok = cache->finish(); !ok) return report_error(ok.error().message);
+      if (auto ok = write_file_atomic(out / "cloth.obj", cloth_obj(sim->model(), rest)); !ok) {
+        return report_error(ok.error().message);
+      }
     }
-    if (divergence) return report_error(*divergence);
-    if (auto ok = cache->finish(); !ok) return report_error(ok.error().message);
-    const auto built = build_cloth(make_grid_cloth(args.grid));  // the rest mesh
-    if (auto ok = write_file_atomic(out / "cloth.obj", cloth_obj(built->model, built->state));
-        !ok) {
+    // metrics.json last: once it is there, the run's files are complete.
+    if (auto ok = write_file_atomic(out / "metrics.json", cloth_metrics_json(info, steps)); !ok) {
       return report_error(ok.error().message);
     }
   }

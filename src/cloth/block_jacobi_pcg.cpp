@@ -43,6 +43,12 @@ PcgResult BlockJacobiPcg::solve(const BlockHessian& a, const Eigen::VectorXd& b,
   p_ = z_;
   double rz = r_.dot(z_);
   double r_norm = b_norm;
+  // With the exact Hessian a diagonal block can itself be indefinite; then r.z may be <= 0 and
+  // CG has no meaning: report it like negative curvature, so the caller projects.
+  if (!(rz > 0.0)) {
+    result.indefinite = true;
+    return result;
+  }
   while (result.iterations < max_iterations) {
     a.multiply(model_, p_, ap_);
     const double curvature = p_.dot(ap_);
@@ -58,6 +64,10 @@ PcgResult BlockJacobiPcg::solve(const BlockHessian& a, const Eigen::VectorXd& b,
     if (r_norm <= threshold) break;
     apply_preconditioner(r_, z_);
     const double rz_next = r_.dot(z_);
+    if (!(rz_next > 0.0)) {
+      result.indefinite = true;
+      break;
+    }
     p_ = z_ + (rz_next / rz) * p_;
     rz = rz_next;
   }

@@ -18,6 +18,13 @@ std::string spring(std::size_t i) {
 bool finite_positive(double v) {
   return std::isfinite(v) && v > 0.0;
 }
+
+// A spring's rest length: as given, or (negative) the distance of its particles as described.
+double resolved_rest_length(const ClothDesc& desc, const SpringDesc& s) {
+  return s.rest_length >= 0.0
+             ? s.rest_length
+             : (desc.particles[s.a].position - desc.particles[s.b].position).norm();
+}
 }  // namespace
 
 std::optional<Error> ClothDesc::validate() const {
@@ -48,9 +55,7 @@ std::optional<Error> ClothDesc::validate() const {
       return Error{spring(s) + " stiffness must be positive and finite, got " +
                    format_number(sp.stiffness)};
     }
-    const double length = sp.rest_length >= 0.0
-                              ? sp.rest_length
-                              : (particles[sp.a].position - particles[sp.b].position).norm();
+    const double length = resolved_rest_length(*this, sp);
     if (!finite_positive(length)) {
       return Error{spring(s) + " has zero rest length"};
     }
@@ -82,10 +87,7 @@ Result<BuiltCloth> build_cloth(const ClothDesc& desc) {
   }
   for (const SpringDesc& s : desc.springs) {
     m.springs.push_back({s.a, s.b});
-    m.rest_length.push_back(
-        s.rest_length >= 0.0
-            ? s.rest_length
-            : (desc.particles[s.a].position - desc.particles[s.b].position).norm());
+    m.rest_length.push_back(resolved_rest_length(desc, s));
     m.stiffness.push_back(s.stiffness);
   }
   m.triangles = desc.triangles;

@@ -107,9 +107,8 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report) {
   report.ms_gradient += ms_since(t);
 
   const double start_norm = gradient_norm;
-  if (report.newton_iterations == 0 && report.gradient_norm_start == 0.0) {
-    report.gradient_norm_start = start_norm;
-  }
+  if (report.substeps_done == 0) report.gradient_norm_start = start_norm;
+  ++report.substeps_done;
   double inertia_scale = 0.0;  // |M y|
   for (int i = 0; i < model_.particle_count(); ++i) {
     inertia_scale += model_.mass[i] * model_.mass[i] * x_.segment<3>(3 * i).squaredNorm();

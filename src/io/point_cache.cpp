@@ -1,6 +1,5 @@
 #include "animkit/io/point_cache.h"
 
-
 #include <bit>
 #include <cerrno>
 #include <cstdint>
@@ -84,6 +83,11 @@ Result<Pc2Writer> Pc2Writer::open(const std::filesystem::path& path, int points)
 }
 
 Result<void> Pc2Writer::add_frame(const Eigen::VectorXd& positions) {
+  if (positions.size() != static_cast<Eigen::Index>(buffer_.size())) {
+    return fail("cannot write " + path_.string() + ": a frame of " +
+                std::to_string(positions.size()) + " coordinates for " + std::to_string(points_) +
+                " points");
+  }
   for (std::size_t i = 0; i < buffer_.size(); ++i) {
     buffer_[i] = static_cast<float>(positions[static_cast<Eigen::Index>(i)]);
   }
@@ -112,6 +116,12 @@ Result<PointCache> read_pc2(const std::filesystem::path& path) {
     problem = "is not a PC2 point cache (no POINTCACHE2 header)";
   } else if (header.points < 0 || header.samples < 0) {
     problem = "has a negative point or sample count";
+  } else if (std::error_code ec; 32 + 12 * static_cast<std::uintmax_t>(header.points) *
+                                          static_cast<std::uintmax_t>(header.samples) >
+                                 std::filesystem::file_size(path, ec)) {
+    // Checked before allocating: a corrupt header must not ask for gigabytes.
+    problem = "is truncated: its header promises " + std::to_string(header.samples) +
+              " frames of " + std::to_string(header.points) + " points";
   } else {
     cache.points = header.points;
     cache.start_frame = header.start_frame;

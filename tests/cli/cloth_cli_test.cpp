@@ -104,7 +104,7 @@ INSTANTIATE_TEST_SUITE_P(
                     BadCloth{"--mass nan", "mass must be positive and finite, got nan"},
                     BadCloth{"--dt 0", "--dt must be a positive finite number of seconds, got 0"},
                     BadCloth{"--dt -0.1", "--dt must be a positive finite number"},
-                    BadCloth{"--grid 0", "grid must have between 1 and 2000 cells per side, got 0"},
+                    BadCloth{"--grid 0", "grid must have between 1 and 500 cells per side, got 0"},
                     BadCloth{"--stiffness 0", "stiffness must be positive and finite, got 0"},
                     BadCloth{"--damping -1", "damping must be a finite number >= 0, got -1"},
                     BadCloth{"--gravity inf", "gravity must be finite, got inf"},

@@ -70,8 +70,13 @@ TEST(PointCache, RejectsFilesThatAreNotPointCaches) {
     ASSERT_TRUE(writer->finish());
   }
   fs::resize_file(dir / "short.pc2", 32 + 10);
-  EXPECT_EQ(read_pc2(dir / "short.pc2").error().message,
-            (dir / "short.pc2").string() + " is truncated: frame 0 of 1 is incomplete");
+  EXPECT_EQ(
+      read_pc2(dir / "short.pc2").error().message,
+      (dir / "short.pc2").string() + " is truncated: its header promises 1 frames of 2 points");
+  {
+    auto writer = Pc2Writer::open(dir / "wrong.pc2", 2);
+    EXPECT_FALSE(writer->add_frame(Eigen::VectorXd::Ones(5)));  // 5 coordinates for 2 points
+  }
   EXPECT_FALSE(read_pc2(dir / "missing.pc2"));
 }
 

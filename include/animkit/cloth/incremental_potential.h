@@ -3,7 +3,8 @@
 // x_n, v_n the state at the step's start and f_ext = M g the gravity:
 //   y    = x_n + h v_n + h^2 M^-1 f_ext
 //   g(x) = 1/(2h^2) |x - y|_M^2 + E(x) + D(x)
-//   grad g = M (x - y) / h^2 + grad E(x) + grad D(x),   Hessian = M / h^2 + H(x) + D / h
+//   grad g = M (x - y) / h^2 + grad E(x) + grad D(x),
+//   Hessian = M / h^2 + H(x) + (c / h) sum_springs [u u^T -u u^T; -u u^T u u^T]
 // E is the springs' elastic energy. D adds the lab's spring dashpots (force -c ((v_a - v_b).u) u
 // on a) implicitly: with v = (x - x_n) / h and each axis u frozen at x_n,
 //   D(x) = c / (2h) sum_springs ((dx_a - dx_b) . u)^2,   dx = x - x_n,

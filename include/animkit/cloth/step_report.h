@@ -18,6 +18,7 @@ struct NewtonIterationRecord {
 
 struct StepReport {
   int substeps = 1;
+  int substeps_done = 0;             ///< substeps completed so far (while the step runs)
   int newton_iterations = 0;         ///< summed over substeps (0 for explicit Euler)
   int line_search_steps = 0;         ///< backtracking reductions, summed
   int linear_iterations = 0;         ///< PCG iterations, summed (0 for a direct solve)
