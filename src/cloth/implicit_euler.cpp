@@ -101,7 +101,6 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report) {
   auto t = Clock::now();
   potential_.prepare(state, h);
   x_ = potential_.predicted();
-  double g = potential_.value(x_);
   potential_.gradient(x_, gradient_);
   double gradient_norm = gradient_.norm();
   report.ms_gradient += ms_since(t);
@@ -120,7 +119,8 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report) {
   bool converged = gradient_norm <= stop;
   for (int k = 0; !converged && k < options_.max_newton_iterations; ++k) {
     NewtonIterationRecord record;
-    record.objective = g;
+    // g itself is needed only for the record: the line search works with differences.
+    if (options_.record_iterations) record.objective = potential_.value(x_);
     record.gradient_norm = gradient_norm;
 
     // Hessian and Newton direction: exact Hessian first unless always projecting; redo with
@@ -166,7 +166,6 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report) {
     if (!accepted) break;  // no decrease found: keep x (reported as not converged)
 
     x_ += trial_;
-    g += decrease;
     t = Clock::now();
     potential_.gradient(x_, gradient_);
     gradient_norm = gradient_.norm();
@@ -175,6 +174,7 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report) {
     converged = gradient_norm <= stop;
 
     record.decrease = decrease;
+    if (options_.record_iterations) record.objective_after = potential_.value(x_);
     record.slope = slope;
     record.alpha = alpha;
     if (options_.record_iterations) report.iterations.push_back(record);

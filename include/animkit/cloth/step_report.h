@@ -6,14 +6,15 @@ namespace animkit {
 
 /// One Newton iteration of an implicit step (recorded when ImplicitOptions::record_iterations).
 struct NewtonIterationRecord {
-  double objective = 0.0;      ///< g(x_k)
-  double decrease = 0.0;       ///< g(x_k + alpha dx) - g(x_k) at the accepted step
-  double gradient_norm = 0.0;  ///< |grad g(x_k)|
-  double slope = 0.0;          ///< grad g(x_k) . dx (negative for a descent direction)
-  double alpha = 0.0;          ///< accepted step length
-  int line_search_steps = 0;   ///< backtracking reductions before acceptance
-  int linear_iterations = 0;   ///< PCG iterations of this iteration's solve(s) (0: direct)
-  bool projected = false;      ///< solved with the projected Hessian (see HessianProjection)
+  double objective = 0.0;        ///< g(x_k), evaluated on its own
+  double objective_after = 0.0;  ///< g(x_k + alpha dx), evaluated on its own (for checking)
+  double decrease = 0.0;         ///< g(x_k + alpha dx) - g(x_k) as the line search computed it
+  double gradient_norm = 0.0;    ///< |grad g(x_k)|
+  double slope = 0.0;            ///< grad g(x_k) . dx (negative for a descent direction)
+  double alpha = 0.0;            ///< accepted step length
+  int line_search_steps = 0;     ///< backtracking reductions before acceptance
+  int linear_iterations = 0;     ///< PCG iterations of this iteration's solve(s) (0: direct)
+  bool projected = false;        ///< solved with the projected Hessian (see HessianProjection)
 };
 
 struct StepReport {
