@@ -38,6 +38,7 @@ test: test-release test-sanitize
 
 bench: build
 	$(RELEASE_DIR)/bench/ik_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+	$(RELEASE_DIR)/bench/cloth_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 
 clean:
 	rm -rf build out

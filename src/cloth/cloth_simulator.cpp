@@ -122,6 +122,22 @@ std::optional<std::string> divergence(const ClothState& state) {
 
 }  // namespace
 
+Result<void> ClothSimulator::set_state(const ClothState& state) {
+  const Eigen::Index size = 3 * static_cast<Eigen::Index>(impl_->model.particle_count());
+  if (state.positions.size() != size || state.velocities.size() != size) {
+    return fail("state has " + std::to_string(state.positions.size() / 3) +
+                " particles but the cloth has " + std::to_string(size / 3));
+  }
+  if (!state.positions.allFinite() || !state.velocities.allFinite()) {
+    return fail("state has a non-finite position or velocity");
+  }
+  impl_->state = state;
+  for (int i = 0; i < impl_->model.particle_count(); ++i) {
+    if (impl_->model.pinned[i]) impl_->state.velocities.segment<3>(3 * i).setZero();
+  }
+  return {};
+}
+
 Result<StepReport> ClothSimulator::step(double dt) {
   if (!std::isfinite(dt) || dt <= 0.0) {
     return fail("time step must be a positive finite number, got " + format_number(dt));

@@ -296,6 +296,22 @@ TEST(ClothSimulator, RejectsBadInput) {
             "substeps must be at least 1 (or 0 for the default), got -1");
 }
 
+TEST(ClothSimulator, SetStateRestartsFromASavedState) {
+  auto sim = simulator(make_grid_cloth({.cells = 4}), IntegratorKind::implicit_pcg);
+  for (int frame = 0; frame < 10; ++frame) ASSERT_TRUE(sim.step(kFrame));
+  const ClothState saved = sim.state();
+  ASSERT_TRUE(sim.step(kFrame));
+  const ClothState next = sim.state();
+  ASSERT_TRUE(sim.set_state(saved));
+  ASSERT_TRUE(sim.step(kFrame));
+  EXPECT_EQ(sim.state().positions, next.positions);  // deterministic: same bits again
+  ClothState bad = saved;
+  bad.positions[7] = std::nan("");
+  EXPECT_EQ(sim.set_state(bad).error().message, "state has a non-finite position or velocity");
+  bad.positions.resize(9);
+  EXPECT_EQ(sim.set_state(bad).error().message, "state has 3 particles but the cloth has 25");
+}
+
 TEST(ClothSimulator, ExplicitEulerWithTheLabsSubstepsIsStableAndAgreesWithImplicit) {
   auto explicit_euler = simulator(make_grid_cloth(), IntegratorKind::explicit_euler);
   auto implicit = simulator(make_grid_cloth(), IntegratorKind::implicit_pcg);

@@ -51,6 +51,10 @@ class ClothSimulator {
   /// was, and the error says which step and particle.
   Result<StepReport> step(double dt);
 
+  /// Replaces the state (e.g. to restart from a saved one). Errors: wrong size, a non-finite
+  /// value. Pinned particles get zero velocity.
+  Result<void> set_state(const ClothState& state);
+
   const ClothModel& model() const;
   const ClothState& state() const;
   const SimulationOptions& options() const;

@@ -54,8 +54,10 @@ struct ImplicitOptions {
   std::optional<Error> validate() const;
 };
 
-/// Advances a cloth by implicit Euler steps. Holds the workspace (vectors, Hessian pattern,
-/// factorization) sized once for its model, so steps allocate nothing in the solver loop.
+/// Advances a cloth by implicit Euler steps. Holds the workspace (vectors, block Hessian,
+/// preconditioner; for the direct solver the pattern and symbolic factorization) sized once for
+/// its model: the PCG path allocates nothing in the Newton loop. (Eigen's numeric LDL^T copies
+/// the reordered matrix on each factorization, so the direct path does.)
 class ImplicitEuler {
  public:
   ImplicitEuler(const ClothModel& model, const ImplicitOptions& options);
