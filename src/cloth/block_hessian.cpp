@@ -4,15 +4,22 @@ namespace animkit {
 
 void BlockHessian::multiply(const ClothModel& model, const Eigen::VectorXd& p,
                             Eigen::VectorXd& y) const {
-  for (std::size_t i = 0; i < diagonal.size(); ++i) {
+  // A p = (M / h^2) p + sum over springs of [K -K; -K K] (p_a, p_b): one 3x3 product per
+  // spring, K (p_a - p_b), added to a and subtracted from b, instead of a product per block.
+  for (std::size_t i = 0; i < inertia.size(); ++i) {
     const auto k = static_cast<Eigen::Index>(3 * i);
-    y.segment<3>(k).noalias() = diagonal[i] * p.segment<3>(k);
+    y.segment<3>(k) = inertia[i] * p.segment<3>(k);
   }
   for (std::size_t s = 0; s < coupling.size(); ++s) {
     const auto [a, b] = model.springs[s];
-    // Off-diagonal blocks -K: y_a -= K p_b, y_b -= K p_a (K is zero for a pinned end).
-    y.segment<3>(3 * a).noalias() -= coupling[s] * p.segment<3>(3 * b);
-    y.segment<3>(3 * b).noalias() -= coupling[s] * p.segment<3>(3 * a);
+    const bool free_a = !model.pinned[a], free_b = !model.pinned[b];
+    // A pinned end is not an unknown: its p entries are zero and its row stays the identity's.
+    const Eigen::Vector3d d =
+        (free_a ? Eigen::Vector3d(p.segment<3>(3 * a)) : Eigen::Vector3d::Zero()) -
+        (free_b ? Eigen::Vector3d(p.segment<3>(3 * b)) : Eigen::Vector3d::Zero());
+    const Eigen::Vector3d kd = coupling[s] * d;
+    if (free_a) y.segment<3>(3 * a) += kd;
+    if (free_b) y.segment<3>(3 * b) -= kd;
   }
 }
 

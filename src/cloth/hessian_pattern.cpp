@@ -42,7 +42,7 @@ void HessianPattern::assign(const BlockHessian& blocks) {
     for (int k = 0; k < 9; ++k) values[diagonal[i][k]] = blocks.diagonal[i](k % 3, k / 3);
   }
   for (std::size_t s = 0; s < off_diagonal.size(); ++s) {
-    if (off_diagonal[s][0][0] < 0) continue;  // touches a pinned particle: no coupling
+    if (off_diagonal[s][0][0] < 0) continue;  // touches a pinned particle: no off-diagonal
     for (const BlockOffsets& offsets : off_diagonal[s]) {
       for (int k = 0; k < 9; ++k) values[offsets[k]] -= blocks.coupling[s](k % 3, k / 3);
     }

@@ -105,7 +105,8 @@ void IncrementalPotential::hessian(const Eigen::VectorXd& x, BlockHessian& block
                                    bool projected) const {
   const double inv_h2 = 1.0 / (h_ * h_);
   for (int i = 0; i < model_.particle_count(); ++i) {
-    blocks.diagonal[i] = Mat3::Identity() * (model_.pinned[i] ? 1.0 : model_.mass[i] * inv_h2);
+    blocks.inertia[i] = model_.pinned[i] ? 1.0 : model_.mass[i] * inv_h2;
+    blocks.diagonal[i] = Mat3::Identity() * blocks.inertia[i];
   }
   const double c = model_.damping / h_;
   for (int s = 0; s < model_.spring_count(); ++s) {
@@ -117,12 +118,7 @@ void IncrementalPotential::hessian(const Eigen::VectorXd& x, BlockHessian& block
     const bool free_a = !model_.pinned[a], free_b = !model_.pinned[b];
     if (free_a) blocks.diagonal[a] += k;
     if (free_b) blocks.diagonal[b] += k;
-    // A pinned end is not an unknown: the spring then only stiffens the free end.
-    if (free_a && free_b) {
-      blocks.coupling[s] = k;
-    } else {
-      blocks.coupling[s].setZero();
-    }
+    blocks.coupling[s] = k;  // a pinned end: the products act on the free end only
   }
 }
 

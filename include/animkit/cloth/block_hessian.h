@@ -1,8 +1,9 @@
 #pragma once
 // The implicit step's Hessian stored by blocks, the form matrix-free solvers use: per particle
-// its 3x3 diagonal block, per spring the 3x3 block K its two particles share (the matrix holds
-// +K in both diagonal blocks and -K at (a, b) and (b, a)). Building it writes two arrays in
-// order; multiplying by it reads them in order. No sparse index structure, no scattered writes.
+// its mass term and its full 3x3 diagonal block, per spring the 3x3 block K its two particles
+// share (the matrix holds +K in both diagonal blocks and -K at (a, b) and (b, a)). Building it
+// writes the arrays in order; multiplying by it reads them in order. No sparse index
+// structure, no scattered writes.
 #include <Eigen/Core>
 #include <array>
 #include <vector>
@@ -12,13 +13,17 @@
 namespace animkit {
 
 struct BlockHessian {
-  std::vector<Eigen::Matrix3d> diagonal;  ///< per particle (identity for pinned particles)
-  std::vector<Eigen::Matrix3d> coupling;  ///< per spring; zero when an end is pinned
+  std::vector<Eigen::Matrix3d> diagonal;  ///< per particle, all terms (identity when pinned)
+  std::vector<double> inertia;            ///< per particle: m / h^2 (1 when pinned)
+  std::vector<Eigen::Matrix3d> coupling;  ///< per spring: K
 
   explicit BlockHessian(const ClothModel& model)
-      : diagonal(model.particle_count()), coupling(model.springs.size()) {}
+      : diagonal(model.particle_count()),
+        inertia(model.particle_count()),
+        coupling(model.springs.size()) {}
 
-  /// y = A p for the model's springs.
+  /// y = A p for the model's springs. A pinned particle's row is the identity's, and a spring
+  /// touching it acts on the free end only.
   void multiply(const ClothModel& model, const Eigen::VectorXd& p, Eigen::VectorXd& y) const;
 };
 
