@@ -1,5 +1,6 @@
 #include "animkit/cloth/hessian_pattern.h"
 
+#include <Eigen/OrderingMethods>
 #include <algorithm>
 #include <cassert>
 
@@ -39,17 +40,67 @@ void HessianPattern::assign(const BlockHessian& blocks) {
   // the springs joining a and b, so setting the diagonal and then adding couplings covers all.
   std::fill(values, values + matrix.nonZeros(), 0.0);
   for (std::size_t i = 0; i < diagonal.size(); ++i) {
-    for (int k = 0; k < 9; ++k) values[diagonal[i][k]] = blocks.diagonal[i](k % 3, k / 3);
+    for (int k = 0; k < 9; ++k) {
+      if (diagonal[i][k] >= 0) values[diagonal[i][k]] = blocks.diagonal[i](k % 3, k / 3);
+    }
   }
   for (std::size_t s = 0; s < off_diagonal.size(); ++s) {
-    if (off_diagonal[s][0][0] < 0) continue;  // touches a pinned particle: no off-diagonal
     for (const BlockOffsets& offsets : off_diagonal[s]) {
-      for (int k = 0; k < 9; ++k) values[offsets[k]] -= blocks.coupling[s](k % 3, k / 3);
+      for (int k = 0; k < 9; ++k) {
+        if (offsets[k] >= 0) values[offsets[k]] -= blocks.coupling[s](k % 3, k / 3);
+      }
     }
   }
 }
 
-HessianPattern build_hessian_pattern(const ClothModel& model) {
+namespace {
+
+// Re-lays a full pattern out as its upper triangle in AMD order, carrying the offsets along.
+void reorder_to_upper_amd(HessianPattern& pattern) {
+  const SparseMatrix& full = pattern.matrix;
+  const int size = static_cast<int>(full.rows());
+  // Eigen's AMD returns the inverse permutation; order[i] is DOF i's new position.
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+  Eigen::AMDOrdering<int>()(full, inverse);
+  const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> forward = inverse.inverse();
+  pattern.order.assign(forward.indices().data(), forward.indices().data() + size);
+
+  std::vector<int> row_of(full.nonZeros()), col_of(full.nonZeros());
+  std::vector<Triplet> upper;
+  upper.reserve(static_cast<std::size_t>(full.nonZeros() / 2 + size));
+  for (int c = 0; c < size; ++c) {
+    for (int k = full.outerIndexPtr()[c]; k < full.outerIndexPtr()[c + 1]; ++k) {
+      row_of[k] = pattern.order[full.innerIndexPtr()[k]];
+      col_of[k] = pattern.order[c];
+      if (row_of[k] <= col_of[k]) upper.emplace_back(row_of[k], col_of[k], 0.0);
+    }
+  }
+  SparseMatrix reordered(size, size);
+  reordered.setFromTriplets(upper.begin(), upper.end());
+  reordered.makeCompressed();
+  const auto relocate = [&](HessianPattern::BlockOffsets& offsets) {
+    for (int& k : offsets) {
+      if (k < 0) continue;
+      if (row_of[k] > col_of[k]) {
+        k = -1;  // below the diagonal: the mirror entry carries the value
+        continue;
+      }
+      const int* begin = reordered.innerIndexPtr() + reordered.outerIndexPtr()[col_of[k]];
+      const int* end = reordered.innerIndexPtr() + reordered.outerIndexPtr()[col_of[k] + 1];
+      k = static_cast<int>(std::lower_bound(begin, end, row_of[k]) - reordered.innerIndexPtr());
+    }
+  };
+  for (auto& block : pattern.diagonal) relocate(block);
+  for (auto& pair : pattern.off_diagonal) {
+    relocate(pair[0]);
+    relocate(pair[1]);
+  }
+  pattern.matrix = std::move(reordered);
+}
+
+}  // namespace
+
+HessianPattern build_hessian_pattern(const ClothModel& model, PatternLayout layout) {
   const int n = model.particle_count();
   std::vector<Triplet> triplets;
   triplets.reserve(9 * (static_cast<std::size_t>(n) + 2 * model.springs.size()));
@@ -78,6 +129,7 @@ HessianPattern build_hessian_pattern(const ClothModel& model) {
           {find_block(pattern.matrix, a, b), find_block(pattern.matrix, b, a)});
     }
   }
+  if (layout == PatternLayout::upper_amd) reorder_to_upper_amd(pattern);
   return pattern;
 }
 

@@ -50,8 +50,11 @@ std::optional<Error> ImplicitOptions::validate() const {
 }
 
 struct ImplicitEuler::DirectSolver {
-  HessianPattern pattern;  // the compressed matrix the factorization reads
-  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  // The upper triangle, already in AMD order: the factorization reads it in place (with
+  // Eigen's own ordering it would copy a reordered matrix at every factorization).
+  HessianPattern pattern;
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>> ldlt;
+  Eigen::VectorXd rhs, solution;  // in the pattern's order
 };
 
 ImplicitEuler::ImplicitEuler(const ClothModel& model, const ImplicitOptions& options)
@@ -71,7 +74,9 @@ ImplicitEuler::ImplicitEuler(const ClothModel& model, const ImplicitOptions& opt
   spring_force_scale_ = std::sqrt(spring_force_scale_);
   if (options_.linear_solver == LinearSolverKind::direct) {
     direct_ = std::make_unique<DirectSolver>();
-    direct_->pattern = build_hessian_pattern(model);
+    direct_->pattern = build_hessian_pattern(model, PatternLayout::upper_amd);
+    direct_->rhs.resize(3 * model.particle_count());
+    direct_->solution.resize(3 * model.particle_count());
     direct_->ldlt.analyzePattern(direct_->pattern.matrix);  // once: the pattern never changes
   }
 }
@@ -83,7 +88,12 @@ bool ImplicitEuler::solve_newton_system(double relative_gradient, NewtonIteratio
   if (direct_) {
     direct_->pattern.assign(hessian_);
     direct_->ldlt.factorize(direct_->pattern.matrix);
-    dx_ = direct_->ldlt.solve(rhs_);
+    const std::vector<int>& order = direct_->pattern.order;
+    for (std::size_t i = 0; i < order.size(); ++i)
+      direct_->rhs[order[i]] = rhs_[static_cast<Eigen::Index>(i)];
+    direct_->solution = direct_->ldlt.solve(direct_->rhs);
+    for (std::size_t i = 0; i < order.size(); ++i)
+      dx_[static_cast<Eigen::Index>(i)] = direct_->solution[order[i]];
     // LDL^T of a symmetric matrix: positive definite exactly when every pivot is positive.
     return direct_->ldlt.info() == Eigen::Success && direct_->ldlt.vectorD().minCoeff() > 0.0;
   }

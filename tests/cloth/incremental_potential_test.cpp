@@ -92,6 +92,31 @@ TEST_F(IncrementalPotentialTest, HessianMatchesFiniteDifferencesOfTheGradient) {
   EXPECT_LT((analytic - analytic.transpose()).norm(), 1e-9 * analytic.norm());
 }
 
+TEST_F(IncrementalPotentialTest, UpperAmdLayoutHoldsTheSameMatrix) {
+  // The direct solver's layout: upper triangle in a fill-reducing order. Mirrored and put
+  // back in particle order, it must be the full matrix, entry for entry (up to the last bit:
+  // fused multiply-adds can round K(i,j) and K(j,i) apart).
+  IncrementalPotential g(model);
+  g.prepare(state, h);
+  BlockHessian blocks(model);
+  g.hessian(x, blocks, /*projected=*/false);
+  HessianPattern full = build_hessian_pattern(model);
+  HessianPattern upper = build_hessian_pattern(model, PatternLayout::upper_amd);
+  full.assign(blocks);
+  upper.assign(blocks);
+  const Eigen::MatrixXd expected(full.matrix);
+  Eigen::MatrixXd reordered = Eigen::MatrixXd(upper.matrix).selfadjointView<Eigen::Upper>();
+  const auto n = expected.rows();
+  ASSERT_EQ(upper.order.size(), static_cast<std::size_t>(n));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) {
+      ASSERT_NEAR(reordered(upper.order[i], upper.order[j]), expected(i, j),
+                  1e-14 * expected.cwiseAbs().maxCoeff())
+          << i << ", " << j;
+    }
+  }
+}
+
 TEST_F(IncrementalPotentialTest, ProjectedHessianIsPositiveDefinite) {
   IncrementalPotential g(model);
   g.prepare(state, h);

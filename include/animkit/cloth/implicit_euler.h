@@ -17,8 +17,9 @@ namespace animkit {
 
 /// How each Newton iteration solves Hessian * dx = -gradient. Both reach the same x.
 enum class LinearSolverKind {
-  /// Sparse LDL^T (Eigen SimplicialLDLT, AMD ordering) on the fixed pattern: the symbolic
-  /// analysis is done once per model, each iteration only factorizes numerically.
+  /// Sparse LDL^T (Eigen SimplicialLDLT) on the fixed pattern, stored as its upper triangle
+  /// in AMD order: ordering and symbolic analysis are done once per model, each iteration only
+  /// factorizes numerically.
   direct,
   /// Conjugate gradients with a block-Jacobi preconditioner, solved inexactly: to a relative
   /// residual that tightens as Newton converges (Eisenstat-Walker forcing), so early
@@ -56,8 +57,9 @@ struct ImplicitOptions {
 
 /// Advances a cloth by implicit Euler steps. Holds the workspace (vectors, block Hessian,
 /// preconditioner; for the direct solver the pattern and symbolic factorization) sized once for
-/// its model: the PCG path allocates nothing in the Newton loop. (Eigen's numeric LDL^T copies
-/// the reordered matrix on each factorization, so the direct path does.)
+/// its model: the PCG path allocates nothing in the Newton loop. The direct path hands Eigen's
+/// LDL^T a matrix already in fill-reducing order, so no reordered copy is made per
+/// factorization; Eigen still allocates O(N) scratch in each numeric factorization.
 class ImplicitEuler {
  public:
   ImplicitEuler(const ClothModel& model, const ImplicitOptions& options);
