@@ -27,6 +27,20 @@ class IncrementalPotentialTest : public testing::Test {
     x = state.positions;
     for (Eigen::Index i = 0; i < x.size(); ++i) x[i] += u(rng);
   }
+  // g's Hessian at x, by blocks and assembled into a pattern of the given layout.
+  struct Assembled {
+    BlockHessian blocks;
+    HessianPattern pattern;
+  };
+  Assembled hessian_at_x(bool projected, PatternLayout layout = PatternLayout::full) const {
+    IncrementalPotential g(model);
+    g.prepare(state, h);
+    Assembled a{BlockHessian(model), build_hessian_pattern(model, layout)};
+    g.hessian(x, a.blocks, projected);
+    a.pattern.assign(a.blocks);
+    return a;
+  }
+
   ClothModel model;
   ClothState state;
   Eigen::VectorXd x;
@@ -58,14 +72,11 @@ TEST_F(IncrementalPotentialTest, GradientMatchesFiniteDifferencesOfG) {
 TEST_F(IncrementalPotentialTest, HessianMatchesFiniteDifferencesOfTheGradient) {
   IncrementalPotential g(model);
   g.prepare(state, h);
-  BlockHessian blocks(model);
-  g.hessian(x, blocks, /*projected=*/false);
-  HessianPattern pattern = build_hessian_pattern(model);
-  pattern.assign(blocks);
-  const Eigen::MatrixXd analytic = Eigen::MatrixXd(pattern.matrix);
+  const Assembled exact = hessian_at_x(/*projected=*/false);
+  const Eigen::MatrixXd analytic = Eigen::MatrixXd(exact.pattern.matrix);
   // The matrix-free product agrees with the assembled matrix.
   Eigen::VectorXd product(x.size());
-  blocks.multiply(model, x, product);
+  exact.blocks.multiply(model, x, product);
   EXPECT_LT((product - analytic * x).norm(), 1e-10 * product.norm());
   constexpr double step = 1e-6;
   Eigen::VectorXd plus_gradient(x.size()), minus_gradient(x.size());
@@ -96,15 +107,8 @@ TEST_F(IncrementalPotentialTest, UpperAmdLayoutHoldsTheSameMatrix) {
   // The direct solver's layout: upper triangle in a fill-reducing order. Mirrored and put
   // back in particle order, it must be the full matrix, entry for entry (up to the last bit:
   // fused multiply-adds can round K(i,j) and K(j,i) apart).
-  IncrementalPotential g(model);
-  g.prepare(state, h);
-  BlockHessian blocks(model);
-  g.hessian(x, blocks, /*projected=*/false);
-  HessianPattern full = build_hessian_pattern(model);
-  HessianPattern upper = build_hessian_pattern(model, PatternLayout::upper_amd);
-  full.assign(blocks);
-  upper.assign(blocks);
-  const Eigen::MatrixXd expected(full.matrix);
+  const HessianPattern upper = hessian_at_x(false, PatternLayout::upper_amd).pattern;
+  const Eigen::MatrixXd expected(hessian_at_x(false).pattern.matrix);
   Eigen::MatrixXd reordered = Eigen::MatrixXd(upper.matrix).selfadjointView<Eigen::Upper>();
   const auto n = expected.rows();
   ASSERT_EQ(upper.order.size(), static_cast<std::size_t>(n));
@@ -118,13 +122,8 @@ TEST_F(IncrementalPotentialTest, UpperAmdLayoutHoldsTheSameMatrix) {
 }
 
 TEST_F(IncrementalPotentialTest, ProjectedHessianIsPositiveDefinite) {
-  IncrementalPotential g(model);
-  g.prepare(state, h);
-  BlockHessian blocks(model);
-  g.hessian(x, blocks, /*projected=*/true);
-  HessianPattern pattern = build_hessian_pattern(model);
-  pattern.assign(blocks);
-  const Eigen::LLT<Eigen::MatrixXd> llt{Eigen::MatrixXd(pattern.matrix)};
+  const Eigen::LLT<Eigen::MatrixXd> llt{
+      Eigen::MatrixXd(hessian_at_x(/*projected=*/true).pattern.matrix)};
   EXPECT_EQ(llt.info(), Eigen::Success);
 }
 
