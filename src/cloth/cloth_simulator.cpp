@@ -54,6 +54,7 @@ struct ClothSimulator::Impl {
   SimulationOptions options;
   std::optional<ExplicitEuler> explicit_euler;
   std::optional<ImplicitEuler> implicit_euler;
+  std::optional<Eigen::VectorXd> external_forces;
   int steps = 0;
 };
 
@@ -122,6 +123,21 @@ std::optional<std::string> divergence(const ClothState& state) {
 
 }  // namespace
 
+Result<void> ClothSimulator::set_external_forces(const Eigen::VectorXd& forces) {
+  const Eigen::Index size = 3 * static_cast<Eigen::Index>(impl_->model.particle_count());
+  if (forces.size() != size) {
+    return fail("external forces have " + std::to_string(forces.size()) +
+                " entries but the cloth needs " + std::to_string(size));
+  }
+  if (!forces.allFinite()) return fail("external forces have a non-finite value");
+  impl_->external_forces = forces;
+  return {};
+}
+
+void ClothSimulator::clear_external_forces() {
+  impl_->external_forces.reset();
+}
+
 Result<void> ClothSimulator::set_state(const ClothState& state) {
   const Eigen::Index size = 3 * static_cast<Eigen::Index>(impl_->model.particle_count());
   if (state.positions.size() != size || state.velocities.size() != size) {
@@ -149,10 +165,11 @@ Result<StepReport> ClothSimulator::step(double dt) {
   s.backup.positions = s.state.positions;
   s.backup.velocities = s.state.velocities;
   const double h = dt / report.substeps;
+  const Eigen::VectorXd* external = s.external_forces ? &*s.external_forces : nullptr;
   if (s.explicit_euler) {
-    s.explicit_euler->step(s.state, dt, report.substeps);
+    s.explicit_euler->step(s.state, dt, report.substeps, external);
   } else {
-    for (int k = 0; k < report.substeps; ++k) s.implicit_euler->step(s.state, h, report);
+    for (int k = 0; k < report.substeps; ++k) s.implicit_euler->step(s.state, h, report, external);
   }
   if (auto problem = divergence(s.state)) {
     s.state.positions = s.backup.positions;

@@ -107,9 +107,10 @@ bool ImplicitEuler::solve_newton_system(double relative_gradient, NewtonIteratio
   return !pcg.indefinite;
 }
 
-void ImplicitEuler::step(ClothState& state, double h, StepReport& report) {
+void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
+                         const Eigen::VectorXd* external_forces) {
   auto t = Clock::now();
-  potential_.prepare(state, h);
+  potential_.prepare(state, h, external_forces);
   x_ = potential_.predicted();
   potential_.gradient(x_, gradient_);
   double gradient_norm = gradient_.norm();

@@ -18,7 +18,8 @@ IncrementalPotential::IncrementalPotential(const ClothModel& model)
       x_start_(3 * model.particle_count()),
       damping_axis_(model.springs.size(), Vec3::Zero()) {}
 
-void IncrementalPotential::prepare(const ClothState& state, double h) {
+void IncrementalPotential::prepare(const ClothState& state, double h,
+                                   const Eigen::VectorXd* external_forces) {
   assert(h > 0.0);
   h_ = h;
   x_start_ = state.positions;
@@ -28,6 +29,9 @@ void IncrementalPotential::prepare(const ClothState& state, double h) {
     } else {
       y_.segment<3>(3 * i) = at(state.positions, i) + h * at(state.velocities, i) +
                              Vec3(0.0, -h * h * model_.gravity, 0.0);
+      if (external_forces) {
+        y_.segment<3>(3 * i) += (h * h / model_.mass[i]) * at(*external_forces, i);
+      }
     }
   }
   for (int s = 0; s < model_.spring_count(); ++s) {

@@ -51,6 +51,13 @@ class ClothSimulator {
   /// was, and the error says which step and particle.
   Result<StepReport> step(double dt);
 
+  /// Forces (3N, world units, particle-major like the state) added in every later step, held
+  /// constant over each step like gravity: e.g. a mouse spring the caller re-evaluates per
+  /// frame. Forces on pinned particles do nothing. Errors: wrong size, a non-finite value.
+  Result<void> set_external_forces(const Eigen::VectorXd& forces);
+  /// Removes the external forces.
+  void clear_external_forces();
+
   /// Replaces the state (e.g. to restart from a saved one). Errors: wrong size, a non-finite
   /// value. Pinned particles get zero velocity.
   Result<void> set_state(const ClothState& state);

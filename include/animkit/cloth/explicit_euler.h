@@ -15,8 +15,10 @@ class ExplicitEuler {
  public:
   explicit ExplicitEuler(const ClothModel& model);
 
-  /// `substeps` substeps of h / substeps each, from `state` into `state`.
-  void step(ClothState& state, double h, int substeps);
+  /// `substeps` substeps of h / substeps each, from `state` into `state`. `external_forces`
+  /// (3N, may be null) are added to the forces, constant over the step.
+  void step(ClothState& state, double h, int substeps,
+            const Eigen::VectorXd* external_forces = nullptr);
 
  private:
   const ClothModel& model_;

@@ -66,7 +66,9 @@ class ImplicitEuler {
   ~ImplicitEuler();
 
   /// One step of h > 0 from `state` into `state`; adds its numbers to `report`.
-  void step(ClothState& state, double h, StepReport& report);
+  /// `external_forces`: see IncrementalPotential::prepare().
+  void step(ClothState& state, double h, StepReport& report,
+            const Eigen::VectorXd* external_forces = nullptr);
 
  private:
   struct DirectSolver;

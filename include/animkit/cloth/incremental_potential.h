@@ -24,7 +24,9 @@ class IncrementalPotential {
   explicit IncrementalPotential(const ClothModel& model);
 
   /// Sets up the step from `state` over time h > 0: y, x_n and the damping axes.
-  void prepare(const ClothState& state, double h);
+  /// `external_forces` (3N, world units; may be null) act like gravity: constant over the step,
+  /// they enter y as h^2 M^-1 f (e.g. the viewer's mouse spring, evaluated at x_n).
+  void prepare(const ClothState& state, double h, const Eigen::VectorXd* external_forces = nullptr);
 
   /// The predicted positions y, where Newton starts (pinned particles: x_n).
   const Eigen::VectorXd& predicted() const { return y_; }

@@ -1,0 +1,37 @@
+#pragma once
+// Pictures without a window: an offscreen context, the renderer and a multisampled target in
+// one object. The CLI uses it for drawing.png, final.png and video frames; tests use it to
+// check what a scene looks like.
+#include <memory>
+
+#include "animkit/core/image.h"
+#include "animkit/render/gl_context.h"
+#include "animkit/render/offscreen_target.h"
+#include "animkit/render/renderer.h"
+#include "animkit/scene/orbit_camera.h"
+
+namespace animkit {
+
+class PictureRenderer {
+ public:
+  /// Errors: no OpenGL context (the message says what was tried), a bad size.
+  static Result<PictureRenderer> create(int width, int height);
+
+  /// Draws `list` seen by `camera` over the background colour and reads the picture back.
+  Image render(const DrawList& list, const OrbitCamera& camera, Rgba background = palette::background);
+
+  int width() const { return target_.width(); }
+  int height() const { return target_.height(); }
+  double aspect() const { return static_cast<double>(width()) / height(); }
+  const OffscreenContext& context() const { return context_; }
+
+ private:
+  PictureRenderer(OffscreenContext context, Renderer renderer, OffscreenTarget target);
+  // Declared in this order so they are destroyed target, renderer, context: GL objects go
+  // while their context still exists.
+  OffscreenContext context_;
+  Renderer renderer_;
+  OffscreenTarget target_;
+};
+
+}  // namespace animkit

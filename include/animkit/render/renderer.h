@@ -1,0 +1,41 @@
+#pragma once
+// Draws a DrawList with OpenGL 3.3 core: lit two-sided triangles, screen-space-wide lines and
+// round point markers. Needs a current context (OffscreenContext or a window's); it draws into
+// whatever framebuffer is bound. The only GL state it leaves changed is what it binds to draw.
+#include <Eigen/Core>
+#include <memory>
+
+#include "animkit/core/result.h"
+#include "animkit/scene/draw_list.h"
+
+namespace animkit {
+
+struct Viewport {
+  int width = 0, height = 0;  ///< pixels
+};
+
+class Renderer {
+ public:
+  /// Compiles the shaders and makes the buffers. Errors: a shader that does not compile or
+  /// link (with the driver's log), no current context.
+  static Result<Renderer> create();
+
+  Renderer(Renderer&&) noexcept;
+  Renderer& operator=(Renderer&&) noexcept;
+  ~Renderer();
+
+  /// Clears the bound framebuffer to `background` (colour and depth).
+  void clear(const Viewport& viewport, Rgba background) const;
+  /// Draws `list`: triangles, then points, then lines (a drawn path covers the targets under
+  /// it, as in the lab). Markers are pulled slightly towards the eye, so they stay visible on
+  /// the surfaces they lie on. `view` and `projection` as OrbitCamera gives them.
+  void draw(const DrawList& list, const Eigen::Matrix4d& view, const Eigen::Matrix4d& projection,
+            const Viewport& viewport);
+
+ private:
+  struct Impl;
+  explicit Renderer(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace animkit

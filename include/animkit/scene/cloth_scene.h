@@ -1,0 +1,84 @@
+#pragma once
+// The interactive "Mass-Spring Cloth" scene: the lab's hanging cloth with live parameters, a
+// mouse spring to drag any particle, and pins the user can toggle. The viewer and the CLI's
+// pictures drive this class; it holds the state, they only show it.
+#include <deque>
+#include <optional>
+
+#include "animkit/cloth/cloth_simulator.h"
+#include "animkit/cloth/grid_cloth.h"
+#include "animkit/scene/draw_list.h"
+#include "animkit/scene/orbit_camera.h"
+
+namespace animkit {
+
+struct ClothSceneOptions {
+  GridClothOptions grid;         ///< the lab's cloth by default
+  SimulationOptions simulation;  ///< implicit Euler with PCG by default
+  double time_step = 1.0 / 30.0; ///< seconds per frame (the lab: the frame's duration), > 0
+
+  std::optional<Error> validate() const;
+};
+
+/// What describe() draws. The lab shows the springs; the surface is what users expect.
+struct ClothStyle {
+  bool surface = true;    ///< lit, two-sided, smooth-shaded triangles
+  bool springs = false;   ///< every spring as a line
+  bool particles = false; ///< every particle as a point (pinned ones are always marked)
+};
+
+/// The mouse spring: pulls one particle towards a point with force
+/// m (k (target - x) - c v), k = 60 s^-2, c = 2 sqrt(k) s^-1 (critically damped on its own).
+struct ClothDrag {
+  int particle = 0;
+  Vec3 target = Vec3::Zero();  ///< world space
+};
+
+class ClothScene {
+ public:
+  /// Builds the lab's cloth (or the given one). Errors name the first bad option.
+  static Result<ClothScene> create(const ClothSceneOptions& options = {});
+
+  /// Advances one frame (options().time_step). A diverging step is undone and reported; the
+  /// scene stays usable.
+  Result<StepReport> step();
+  /// Rebuilds the cloth from scratch with `options` (grid size and everything else).
+  Result<void> reset(const ClothSceneOptions& options);
+  /// Takes new options while the cloth keeps moving: with the same grid layout the current
+  /// positions, velocities and pins are kept; a new grid size starts over. Errors leave the
+  /// scene as it was.
+  Result<void> apply(const ClothSceneOptions& options);
+  /// Pins a free particle where it is now, or frees a pinned one. Errors: index out of range.
+  Result<void> toggle_pin(int particle);
+
+  /// The particle nearest to the ray, if one passes within `radius` (scene units) of it.
+  std::optional<int> pick(const Ray& ray, double radius) const;
+  /// Starts or moves the mouse spring. Errors: index out of range, non-finite target.
+  Result<void> set_drag(const ClothDrag& drag);
+  void clear_drag();
+  const std::optional<ClothDrag>& drag() const { return drag_; }
+
+  const ClothSimulator& simulator() const { return simulator_; }
+  const ClothSceneOptions& options() const { return options_; }
+  const std::optional<StepReport>& last_step() const { return last_; }
+  /// Total energy after each of the last (up to) kEnergyHistory steps, oldest first.
+  const std::deque<double>& energy_history() const { return energy_; }
+  static constexpr std::size_t kEnergyHistory = 600;
+
+  void describe(DrawList& out, const ClothStyle& style = {}) const;
+  /// A box around where the cloth is and may swing to: what a picture should frame.
+  Eigen::AlignedBox3d focus_bounds() const;
+
+ private:
+  ClothScene(ClothSceneOptions options, ClothDesc desc, ClothSimulator simulator);
+  Result<void> rebuild_keeping_state(ClothDesc desc);
+
+  ClothSceneOptions options_;
+  ClothDesc desc_;  // the description the simulator was built from (pins as toggled)
+  ClothSimulator simulator_;
+  std::optional<ClothDrag> drag_;
+  std::optional<StepReport> last_;
+  std::deque<double> energy_;
+};
+
+}  // namespace animkit

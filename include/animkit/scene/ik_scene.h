@@ -1,0 +1,75 @@
+#pragma once
+// The interactive "Inverse Kinematics" scene: an arm drawing a list of targets one frame at a
+// time, as the lab's app does, plus a free target the user can drag. The viewer and the CLI's
+// pictures both drive this class; it holds the state, they only show it.
+#include <optional>
+#include <vector>
+
+#include "animkit/kinematics/ik_solver.h"
+#include "animkit/scene/draw_list.h"
+
+namespace animkit {
+
+struct IkSceneOptions {
+  IkSolverKind solver = IkSolverKind::ccd;
+  IkOptions ik;  ///< lab defaults
+};
+
+/// What the last solve did (for the viewer's readouts).
+struct IkSolveReadout {
+  Vec3 target = Vec3::Zero();
+  IkResult result;
+  double solve_time_us = 0.0;
+};
+
+class IkScene {
+ public:
+  /// Errors: an invalid chain, an empty target list or a non-finite target (naming its index),
+  /// invalid solver options.
+  static Result<IkScene> create(const ChainDesc& chain, std::vector<Vec3> targets,
+                                const IkSceneOptions& options = {});
+
+  /// Back to the rest pose, the first target and an empty path.
+  void reset();
+  /// Solves for the next target and extends the drawn path. After the last target the next
+  /// call starts a new lap: rest pose, empty path (the lab's behaviour).
+  const IkSolveReadout& advance();
+  /// Solves for any target (a dragged one) from the current pose; the drawn path is untouched.
+  /// Errors: a non-finite target.
+  Result<IkSolveReadout> follow(const Vec3& target);
+  /// Replaces the targets and resets. Errors as in create().
+  Result<void> set_targets(std::vector<Vec3> targets);
+  void set_solver(IkSolverKind solver) { options_.solver = solver; }
+
+  const Chain& chain() const { return chain_; }
+  const Pose& pose() const { return pose_; }
+  const std::vector<Vec3>& targets() const { return targets_; }
+  const std::vector<Vec3>& path() const { return path_; }
+  const IkSceneOptions& options() const { return options_; }
+  /// Index of the target the next advance() solves for.
+  int next_target() const { return next_; }
+  /// True once every target of the current lap has been solved.
+  bool lap_finished() const { return next_ == 0 && !path_.empty(); }
+  const std::optional<IkSolveReadout>& last_solve() const { return last_; }
+
+  /// Describes the scene: ground grid, targets (green), drawn path (red), the arm (bones as
+  /// boxes, joints as spheres) and the last target when it was out of reach (orange, joined
+  /// to the end effector).
+  void describe(DrawList& out) const;
+  /// A box around the targets and the whole reach of the arm: what a picture should frame.
+  Eigen::AlignedBox3d focus_bounds() const;
+
+ private:
+  IkScene(Chain chain, std::vector<Vec3> targets, const IkSceneOptions& options);
+  IkSolveReadout solve(const Vec3& target);
+
+  Chain chain_;
+  Pose pose_;
+  std::vector<Vec3> targets_;
+  std::vector<Vec3> path_;
+  IkSceneOptions options_;
+  int next_ = 0;
+  std::optional<IkSolveReadout> last_;
+};
+
+}  // namespace animkit

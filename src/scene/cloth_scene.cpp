@@ -1,0 +1,187 @@
+#include "animkit/scene/cloth_scene.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "animkit/core/validation.h"
+
+namespace animkit {
+
+namespace {
+constexpr double kDragStiffness = 60.0;  // s^-2, per unit mass
+}
+
+std::optional<Error> ClothSceneOptions::validate() const {
+  if (auto error = grid.validate()) return error;
+  if (auto error = simulation.validate()) return error;
+  if (!std::isfinite(time_step) || time_step <= 0.0) {
+    return Error{"time step must be a positive finite number, got " + format_number(time_step)};
+  }
+  return std::nullopt;
+}
+
+ClothScene::ClothScene(ClothSceneOptions options, ClothDesc desc, ClothSimulator simulator)
+    : options_(std::move(options)), desc_(std::move(desc)), simulator_(std::move(simulator)) {}
+
+Result<ClothScene> ClothScene::create(const ClothSceneOptions& options) {
+  if (auto error = options.validate()) return fail(error->message);
+  ClothDesc desc = make_grid_cloth(options.grid);
+  auto simulator = ClothSimulator::create(desc, options.simulation);
+  if (!simulator) return fail(simulator.error().message);
+  return ClothScene(options, std::move(desc), std::move(*simulator));
+}
+
+Result<void> ClothScene::reset(const ClothSceneOptions& options) {
+  auto fresh = create(options);
+  if (!fresh) return fail(fresh.error().message);
+  *this = std::move(*fresh);
+  return {};
+}
+
+Result<void> ClothScene::rebuild_keeping_state(ClothDesc desc) {
+  auto simulator = ClothSimulator::create(desc, options_.simulation);
+  if (!simulator) return fail(simulator.error().message);
+  if (auto kept = simulator->set_state(simulator_.state()); !kept) return kept;
+  simulator_ = std::move(*simulator);
+  desc_ = std::move(desc);
+  return {};
+}
+
+Result<void> ClothScene::apply(const ClothSceneOptions& options) {
+  if (auto error = options.validate()) return fail(error->message);
+  const bool same_layout = options.grid.cells == options_.grid.cells &&
+                           options.grid.size == options_.grid.size &&
+                           options.grid.height == options_.grid.height;
+  if (!same_layout) return reset(options);
+  // Same particles and springs: take the new physical parameters, keep pins and motion.
+  ClothDesc desc = make_grid_cloth(options.grid);
+  for (std::size_t i = 0; i < desc.particles.size(); ++i) {
+    desc.particles[i].pinned = desc_.particles[i].pinned;
+    desc.particles[i].position = desc_.particles[i].position;
+  }
+  const ClothSceneOptions previous = options_;
+  options_ = options;
+  if (auto rebuilt = rebuild_keeping_state(std::move(desc)); !rebuilt) {
+    options_ = previous;
+    return rebuilt;
+  }
+  return {};
+}
+
+Result<void> ClothScene::toggle_pin(int particle) {
+  const int count = simulator_.model().particle_count();
+  if (particle < 0 || particle >= count) {
+    return fail("particle " + std::to_string(particle) + " is out of range (the cloth has " +
+                std::to_string(count) + ")");
+  }
+  ClothDesc desc = desc_;
+  desc.particles[particle].pinned = !desc.particles[particle].pinned;
+  return rebuild_keeping_state(std::move(desc));
+}
+
+std::optional<int> ClothScene::pick(const Ray& ray, double radius) const {
+  std::optional<int> best;
+  double best_along = std::numeric_limits<double>::infinity();
+  const ClothState& state = simulator_.state();
+  for (int i = 0; i < simulator_.model().particle_count(); ++i) {
+    const Vec3 to_particle = state.position(i) - ray.origin;
+    const double along = to_particle.dot(ray.direction);
+    if (along <= 0.0) continue;
+    const double off_ray = (to_particle - along * ray.direction).norm();
+    // Of the particles near the ray, the one nearest the eye: what the user sees.
+    if (off_ray <= radius && along < best_along) {
+      best = i;
+      best_along = along;
+    }
+  }
+  return best;
+}
+
+Result<void> ClothScene::set_drag(const ClothDrag& drag) {
+  const int count = simulator_.model().particle_count();
+  if (drag.particle < 0 || drag.particle >= count) {
+    return fail("particle " + std::to_string(drag.particle) + " is out of range (the cloth has " +
+                std::to_string(count) + ")");
+  }
+  if (!is_finite(drag.target)) {
+    return fail("drag target has a non-finite coordinate " + to_string(drag.target));
+  }
+  drag_ = drag;
+  return {};
+}
+
+void ClothScene::clear_drag() {
+  drag_.reset();
+  simulator_.clear_external_forces();
+}
+
+Result<StepReport> ClothScene::step() {
+  if (drag_) {
+    // The mouse spring, evaluated at the start of the step like gravity.
+    const ClothState& state = simulator_.state();
+    const int p = drag_->particle;
+    const double m = simulator_.model().mass[p];
+    Eigen::VectorXd forces = Eigen::VectorXd::Zero(state.positions.size());
+    forces.segment<3>(3 * p) = m * (kDragStiffness * (drag_->target - state.position(p)) -
+                                    2.0 * std::sqrt(kDragStiffness) * state.velocity(p));
+    if (auto set = simulator_.set_external_forces(forces); !set) return fail(set.error().message);
+  }
+  auto report = simulator_.step(options_.time_step);
+  if (!report) return report;
+  last_ = *report;
+  energy_.push_back(report->energy);
+  if (energy_.size() > kEnergyHistory) energy_.pop_front();
+  return report;
+}
+
+void ClothScene::describe(DrawList& out, const ClothStyle& style) const {
+  out.add_ground_grid(0.0, 16, 0.25, 0.5);
+  const ClothModel& model = simulator_.model();
+  const ClothState& state = simulator_.state();
+  if (style.surface) {
+    // Smooth shading: each vertex normal is the area-weighted sum of its triangles' normals.
+    std::vector<Vec3> normals(model.particle_count(), Vec3::Zero());
+    for (const auto& t : model.triangles) {
+      const Vec3 n = (state.position(t[1]) - state.position(t[0]))
+                         .cross(state.position(t[2]) - state.position(t[0]));
+      for (int k : t) normals[k] += n;
+    }
+    for (Vec3& n : normals) n = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::UnitY();
+    for (const auto& t : model.triangles) {
+      const Vec3 p[3] = {state.position(t[0]), state.position(t[1]), state.position(t[2])};
+      const Vec3 n[3] = {normals[t[0]], normals[t[1]], normals[t[2]]};
+      out.add_triangle(p, n, palette::cloth_front, palette::cloth_back);
+    }
+  }
+  if (style.springs) {
+    for (const auto& [a, b] : model.springs) {
+      out.add_line(state.position(a), state.position(b), palette::spring, 1.0f);
+    }
+  }
+  for (int i = 0; i < model.particle_count(); ++i) {
+    if (model.pinned[i]) {
+      out.add_point(state.position(i), palette::pinned, 10.0f);
+    } else if (style.particles) {
+      out.add_point(state.position(i), palette::particle, 4.0f);
+    }
+  }
+  if (drag_) {
+    out.add_line(state.position(drag_->particle), drag_->target, palette::dragged, 2.0f);
+    out.add_point(drag_->target, palette::dragged, 9.0f);
+  }
+}
+
+Eigen::AlignedBox3d ClothScene::focus_bounds() const {
+  // The cloth hangs from its pinned edge and swings below it: frame the flat sheet and the
+  // sheet hanging straight down from the pins, so a picture does not jump as it moves.
+  Eigen::AlignedBox3d box;
+  const ClothState& state = simulator_.state();
+  for (int i = 0; i < simulator_.model().particle_count(); ++i) box.extend(state.position(i));
+  const GridClothOptions& g = options_.grid;
+  box.extend(Vec3(0.0, g.height - g.size, -0.5 * g.size));
+  box.extend(Vec3(g.size, g.height, 0.5 * g.size));
+  return box;
+}
+
+}  // namespace animkit
