@@ -17,6 +17,7 @@
 #include "animkit/io/atomic_write.h"
 #include "animkit/io/cloth_report.h"
 #include "animkit/io/point_cache.h"
+#include "animkit/scene/cloth_scene.h"
 #include "cli_errors.h"
 
 namespace animkit::cli {
@@ -78,6 +79,25 @@ int run_cloth(const ClothArgs& args) {
   auto sim = ClothSimulator::create(make_grid_cloth(args.grid), options);
   if (!sim) return report_error(sim.error().message);
 
+  // Opened before the run, so a missing OpenGL or ffmpeg stops it before any file is written.
+  auto pictures = PictureOutput::open(args.pictures, !args.out.empty(), 1.0 / args.dt);
+  if (!pictures) return report_error(pictures.error().message);
+  // One camera for the whole run: the sheet flat and hanging straight down both fit.
+  const OrbitCamera camera =
+      OrbitCamera::framing(cloth_focus_bounds(args.grid, sim->state()), pictures->aspect(),
+                           kClothPictureYaw, kClothPicturePitch);
+  DrawList picture;
+  const auto describe_state = [&] {
+    picture.clear();
+    describe_cloth(picture, sim->model(), sim->state(),
+                   {.floor_height = cloth_floor_height(args.grid)});
+  };
+  if (pictures->wants_video()) {
+    describe_state();
+    if (auto ok = pictures->add_video_frame(picture, camera); !ok)
+      return report_error(ok.error().message);
+  }
+
   const std::filesystem::path out(args.out);
   std::optional<Pc2Writer> cache;
   if (!args.out.empty()) {
@@ -105,6 +125,11 @@ int run_cloth(const ClothArgs& args) {
       if (auto ok = cache->add_frame(sim->state().positions); !ok)
         return report_error(ok.error().message);
     }
+    if (pictures->wants_video()) {
+      describe_state();
+      if (auto ok = pictures->add_video_frame(picture, camera); !ok)
+        return report_error(ok.error().message);
+    }
     progress.update(frame, steps.back().ms);
   }
   progress.done();
@@ -128,7 +153,12 @@ int run_cloth(const ClothArgs& args) {
       // so no animation sits next to metrics it does not belong to.
       std::filesystem::remove(out / "cloth.pc2");
       std::filesystem::remove(out / "cloth.obj");
+      std::filesystem::remove(out / "final.png");
     } else {
+      describe_state();
+      if (auto ok = pictures->write_png(out / "final.png", picture, camera); !ok) {
+        return report_error(ok.error().message);
+      }
       if (auto ok = cache->finish(); !ok) return report_error(ok.error().message);
       if (auto ok = write_file_atomic(out / "cloth.obj", cloth_obj(sim->model(), rest)); !ok) {
         return report_error(ok.error().message);
@@ -140,6 +170,7 @@ int run_cloth(const ClothArgs& args) {
     }
   }
   if (divergence) return report_error(*divergence);
+  if (auto ok = pictures->finish_video(); !ok) return report_error(ok.error().message);
 
   const ClothRunSummary s = summarize(steps);
   std::printf("%-15s %6s %9s %7s %12s %12s %10s %9s %13s\n", "integrator", "frames", "particles",
@@ -149,9 +180,10 @@ int run_cloth(const ClothArgs& args) {
               s.newton_iterations_mean, s.linear_iterations_mean, 100.0 * s.converged_fraction,
               s.final_energy);
   if (!args.out.empty()) {
-    std::printf("wrote metrics.json, cloth.obj, cloth.pc2 (%d frames) to %s\n", s.frames + 1,
-                args.out.c_str());
+    std::printf("wrote metrics.json, cloth.obj, cloth.pc2 (%d frames)%s to %s\n", s.frames + 1,
+                pictures->wants_png() ? ", final.png" : "", args.out.c_str());
   }
+  if (!args.pictures.video.empty()) std::printf("wrote %s\n", args.pictures.video.c_str());
   return 0;
 }
 
@@ -187,7 +219,9 @@ std::function<int()> add_cloth_command(CLI::App& app) {
                    "Newton stops when the gradient norm is this fraction of its start (0..1)")
       ->capture_default_str();
   cloth->add_option("--out", args->out,
-                    "Folder for metrics.json, cloth.obj and cloth.pc2 (created if needed)");
+                    "Folder for metrics.json, cloth.obj, cloth.pc2 and final.png (created if "
+                    "needed)");
+  add_picture_options(*cloth, args->pictures, "final.png");
   return [args] { return run_cloth(*args); };
 }
 

@@ -5,6 +5,7 @@
 
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
+#include "picture_output.h"
 
 namespace animkit::cli {
 
@@ -17,6 +18,7 @@ struct ClothArgs {
   int substeps = 0;
   double tolerance = ImplicitOptions{}.tolerance;
   std::string out;  ///< empty: write no files
+  PictureArgs pictures;
 };
 
 /// Runs the simulation, prints the summary table, writes the files; returns the exit code.

@@ -12,6 +12,7 @@
 #include "animkit/trajectory/lab_shapes.h"
 #include "cli_errors.h"
 #include "cloth_command.h"
+#include "ik_pictures.h"
 #include "ik_table.h"
 
 namespace animkit::cli {
@@ -20,11 +21,12 @@ namespace {
 
 struct DemoArgs {
   std::string out = "out/demo";
+  bool no_picture = false;
 };
 
 // Every lab shape with every solver, lab defaults; one folder of reports per drawing and a
 // summary.csv comparing them.
-int run(const DemoArgs& args) {
+int run_ik_shapes(const DemoArgs& args) {
   const auto chain = build_chain(lab_arm());
   if (!chain) return report_error(chain.error().message);
   const std::filesystem::path ik_dir = std::filesystem::path(args.out) / "ik";
@@ -34,6 +36,10 @@ int run(const DemoArgs& args) {
       "The lab's arm draws its five shapes with both solvers (lab defaults: %d "
       "iterations, tolerance %g, warm start).\n\n",
       IkOptions{}.max_iterations, IkOptions{}.tolerance);
+  PictureArgs picture_args;
+  picture_args.no_picture = args.no_picture;
+  auto pictures = PictureOutput::open(picture_args, true, kIkVideoFps);
+  if (!pictures) return report_error(pictures.error().message);
   print_ik_table_header();
   std::string csv =
       "shape,solver,targets,converged_fraction,unreachable_targets,iterations_mean,"
@@ -42,11 +48,16 @@ int run(const DemoArgs& args) {
     for (IkSolverKind solver : all_ik_solvers()) {
       DrawingOptions options;
       options.solver = solver;
-      const auto run = run_drawing(*chain, lab_shape_targets(shape), options);
+      const std::vector<Vec3> targets = lab_shape_targets(shape);
+      const auto run = run_drawing(*chain, targets, options);
       if (!run) return report_error(run.error().message);
       const IkRunLabel label{std::string(to_string(shape)), std::string(to_string(solver))};
-      const auto written =
-          write_ik_reports(ik_dir / (label.shape + "-" + label.solver), label, options, *run);
+      const std::filesystem::path dir = ik_dir / (label.shape + "-" + label.solver);
+      if (auto ok = ensure_output_directory(dir); !ok) return report_error(ok.error().message);
+      if (auto ok = render_ik_pictures(targets, *run, *pictures, dir); !ok) {
+        return report_error(ok.error().message);
+      }
+      const auto written = write_ik_reports(dir, label, options, *run);
       if (!written) return report_error(written.error().message);
       const DrawingSummary s = summarize(*run);
       print_ik_table_row(label.shape, label.solver, s);
@@ -61,12 +72,20 @@ int run(const DemoArgs& args) {
   if (auto ok = write_file_atomic(ik_dir / "summary.csv", csv); !ok) {
     return report_error(ok.error().message);
   }
-  std::printf("\nOutputs: %s/<shape>-<solver>/{metrics.json,path.csv,drawing.svg} and %s\n",
-              ik_dir.string().c_str(), (ik_dir / "summary.csv").string().c_str());
+  std::printf("\nOutputs: %s/<shape>-<solver>/{metrics.json,path.csv,drawing.svg%s} and %s\n",
+              ik_dir.string().c_str(), args.no_picture ? "" : ",drawing.png",
+              (ik_dir / "summary.csv").string().c_str());
+  return 0;
+}
+
+int run(const DemoArgs& args) {
+  // The IK part's renderer (and its OpenGL context) is gone before the cloth makes its own.
+  if (const int code = run_ik_shapes(args); code != 0) return code;
 
   std::printf("\nThe lab's cloth (11 x 11, lab parameters) for 5 s at 60 steps per second:\n\n");
   ClothArgs cloth;
   cloth.out = (std::filesystem::path(args.out) / "cloth").string();
+  cloth.pictures.no_picture = args.no_picture;
   return run_cloth(cloth);
 }
 
@@ -79,6 +98,8 @@ std::function<int()> add_demo_command(CLI::App& app) {
       "Runs the built-in default scenes (the lab's arm drawing every shape with CCD and "
       "FABRIK), prints a summary table and writes every output to a folder.");
   demo->add_option("--out", args->out, "Output folder (created if needed)")->capture_default_str();
+  demo->add_flag("--no-picture", args->no_picture,
+                 "Write no PNG pictures (drawing.png, final.png): no OpenGL needed");
   return [args] { return run(*args); };
 }
 

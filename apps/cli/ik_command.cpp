@@ -5,11 +5,13 @@
 #include <string>
 
 #include "animkit/core/validation.h"
+#include "animkit/io/atomic_write.h"
 #include "animkit/io/ik_report.h"
 #include "animkit/kinematics/chain.h"
 #include "animkit/kinematics/drawing_session.h"
 #include "animkit/trajectory/lab_shapes.h"
 #include "cli_errors.h"
+#include "ik_pictures.h"
 #include "ik_table.h"
 
 namespace animkit::cli {
@@ -26,6 +28,7 @@ struct IkArgs {
   std::string fabrik_rotations = "rest";
   std::string target;
   std::string out;
+  PictureArgs pictures;
 };
 
 std::string shape_names() {
@@ -90,8 +93,17 @@ int run(const IkArgs& args) {
     targets.push_back(target);
     label.shape = "target";
   }
+  // Opened before the run, so a missing OpenGL or ffmpeg stops it before any file is written.
+  auto pictures = PictureOutput::open(args.pictures, !args.out.empty(), kIkVideoFps);
+  if (!pictures) return report_error(pictures.error().message);
   const auto run = run_drawing(*chain, targets, options);
   if (!run) return report_error(run.error().message);
+  if (!args.out.empty()) {
+    if (auto ok = ensure_output_directory(args.out); !ok) return report_error(ok.error().message);
+  }
+  if (auto rendered = render_ik_pictures(targets, *run, *pictures, args.out); !rendered) {
+    return report_error(rendered.error().message);
+  }
   if (!args.out.empty()) {
     if (auto written = write_ik_reports(args.out, label, options, *run); !written) {
       return report_error(written.error().message);
@@ -104,8 +116,10 @@ int run(const IkArgs& args) {
     print_single_target(*chain, *solver, *run);
   }
   if (!args.out.empty()) {
-    std::printf("wrote metrics.json, path.csv, drawing.svg to %s\n", args.out.c_str());
+    std::printf("wrote metrics.json, path.csv, drawing.svg%s to %s\n",
+                pictures->wants_png() ? ", drawing.png" : "", args.out.c_str());
   }
+  if (!args.pictures.video.empty()) std::printf("wrote %s\n", args.pictures.video.c_str());
   return 0;
 }
 
@@ -142,7 +156,9 @@ std::function<int()> add_ik_command(CLI::App& app) {
       ->excludes(laps)
       ->excludes(cold_start);
   ik->add_option("--out", args->out,
-                 "Folder for metrics.json, path.csv and drawing.svg (created if needed)");
+                 "Folder for metrics.json, path.csv, drawing.svg and drawing.png (created if "
+                 "needed)");
+  add_picture_options(*ik, args->pictures, "drawing.png");
   return [args] { return run(*args); };
 }
 

@@ -16,17 +16,28 @@ namespace {
 
 std::string egl_error_name(EGLint code) {
   switch (code) {
-    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-    case EGL_BAD_SURFACE: return "EGL_BAD_SURFACE";
-    default: return "EGL error " + std::to_string(code);
+    case EGL_NOT_INITIALIZED:
+      return "EGL_NOT_INITIALIZED";
+    case EGL_BAD_ACCESS:
+      return "EGL_BAD_ACCESS";
+    case EGL_BAD_ALLOC:
+      return "EGL_BAD_ALLOC";
+    case EGL_BAD_ATTRIBUTE:
+      return "EGL_BAD_ATTRIBUTE";
+    case EGL_BAD_CONFIG:
+      return "EGL_BAD_CONFIG";
+    case EGL_BAD_CONTEXT:
+      return "EGL_BAD_CONTEXT";
+    case EGL_BAD_DISPLAY:
+      return "EGL_BAD_DISPLAY";
+    case EGL_BAD_MATCH:
+      return "EGL_BAD_MATCH";
+    case EGL_BAD_PARAMETER:
+      return "EGL_BAD_PARAMETER";
+    case EGL_BAD_SURFACE:
+      return "EGL_BAD_SURFACE";
+    default:
+      return "EGL error " + std::to_string(code);
   }
 }
 
@@ -50,11 +61,16 @@ Result<EglContext> make_egl_context(EGLDisplay display, bool pbuffer) {
     return fail(message);
   };
   if (!eglBindAPI(EGL_OPENGL_API)) return give_up("eglBindAPI(OpenGL)");
-  const EGLint config_attributes[] = {EGL_SURFACE_TYPE,    pbuffer ? EGL_PBUFFER_BIT : 0,
-                                      EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                                      EGL_RED_SIZE,        8,
-                                      EGL_GREEN_SIZE,      8,
-                                      EGL_BLUE_SIZE,       8,
+  const EGLint config_attributes[] = {EGL_SURFACE_TYPE,
+                                      pbuffer ? EGL_PBUFFER_BIT : 0,
+                                      EGL_RENDERABLE_TYPE,
+                                      EGL_OPENGL_BIT,
+                                      EGL_RED_SIZE,
+                                      8,
+                                      EGL_GREEN_SIZE,
+                                      8,
+                                      EGL_BLUE_SIZE,
+                                      8,
                                       EGL_NONE};
   EGLConfig config = nullptr;
   EGLint configs = 0;
@@ -121,8 +137,7 @@ void OffscreenContext::make_current() const {
   if (impl_->window) {
     glfwMakeContextCurrent(impl_->window);
   } else {
-    eglMakeCurrent(impl_->egl.display, impl_->egl.surface, impl_->egl.surface,
-                   impl_->egl.context);
+    eglMakeCurrent(impl_->egl.display, impl_->egl.surface, impl_->egl.surface, impl_->egl.context);
   }
 }
 

@@ -13,7 +13,7 @@ constexpr int kMaxSide = 8192;
 
 struct OffscreenTarget::Impl {
   int width = 0, height = 0, samples = 1;
-  GLuint multisampled = 0, resolved = 0;      // framebuffers
+  GLuint multisampled = 0, resolved = 0;            // framebuffers
   GLuint color = 0, depth = 0, resolved_color = 0;  // renderbuffers
 
   ~Impl() {

@@ -49,8 +49,8 @@ struct Batch {
 
   void upload(const std::vector<float>& data) const {
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)),
-                 data.data(), GL_STREAM_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
+                 GL_STREAM_DRAW);
   }
 };
 
@@ -103,8 +103,8 @@ void Renderer::clear(const Viewport& viewport, Rgba background) const {
 void Renderer::draw(const DrawList& list, const Eigen::Matrix4d& view,
                     const Eigen::Matrix4d& projection, const Viewport& viewport) {
   const Eigen::Matrix4f view_projection = (projection * view).cast<float>();
-  const Eigen::Vector3f eye = (-view.block<3, 3>(0, 0).transpose() * view.block<3, 1>(0, 3))
-                                  .cast<float>();
+  const Eigen::Vector3f eye =
+      (-view.block<3, 3>(0, 0).transpose() * view.block<3, 1>(0, 3)).cast<float>();
   glViewport(0, 0, viewport.width, viewport.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);

@@ -51,7 +51,8 @@ Result<GLuint> build_program(const char* name, const ShaderSources& sources) {
   static constexpr const char* stage_names[] = {"vertex", "geometry", "fragment"};
   for (int k = 0; k < 3; ++k) {
     if (!stages[k].second) continue;
-    auto shader = compile(stages[k].first, stages[k].second, base + " " + stage_names[k] + " stage");
+    auto shader =
+        compile(stages[k].first, stages[k].second, base + " " + stage_names[k] + " stage");
     if (!shader) {
       cleanup();
       return fail(shader.error().message);

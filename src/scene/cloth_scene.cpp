@@ -135,10 +135,9 @@ Result<StepReport> ClothScene::step() {
   return report;
 }
 
-void ClothScene::describe(DrawList& out, const ClothStyle& style) const {
-  out.add_ground_grid(0.0, 16, 0.25, 0.5);
-  const ClothModel& model = simulator_.model();
-  const ClothState& state = simulator_.state();
+void describe_cloth(DrawList& out, const ClothModel& model, const ClothState& state,
+                    const ClothStyle& style) {
+  out.add_ground_grid(style.floor_height, 16, 0.25, 0.5);
   if (style.surface) {
     // Smooth shading: each vertex normal is the area-weighted sum of its triangles' normals.
     std::vector<Vec3> normals(model.particle_count(), Vec3::Zero());
@@ -166,22 +165,34 @@ void ClothScene::describe(DrawList& out, const ClothStyle& style) const {
       out.add_point(state.position(i), palette::particle, 4.0f);
     }
   }
+}
+
+double cloth_floor_height(const GridClothOptions& grid) {
+  return grid.height - 1.4 * grid.size;
+}
+
+Eigen::AlignedBox3d cloth_focus_bounds(const GridClothOptions& grid, const ClothState& state) {
+  Eigen::AlignedBox3d box;
+  for (Eigen::Index i = 0; i < state.positions.size() / 3; ++i) {
+    box.extend(Vec3(state.positions.segment<3>(3 * i)));
+  }
+  box.extend(Vec3(0.0, grid.height - 1.3 * grid.size, -0.5 * grid.size));
+  box.extend(Vec3(grid.size, grid.height, 0.5 * grid.size));
+  return box;
+}
+
+void ClothScene::describe(DrawList& out, ClothStyle style) const {
+  style.floor_height = cloth_floor_height(options_.grid);
+  describe_cloth(out, simulator_.model(), simulator_.state(), style);
   if (drag_) {
-    out.add_line(state.position(drag_->particle), drag_->target, palette::dragged, 2.0f);
+    const Vec3 grabbed = simulator_.state().position(drag_->particle);
+    out.add_line(grabbed, drag_->target, palette::dragged, 2.0f);
     out.add_point(drag_->target, palette::dragged, 9.0f);
   }
 }
 
 Eigen::AlignedBox3d ClothScene::focus_bounds() const {
-  // The cloth hangs from its pinned edge and swings below it: frame the flat sheet and the
-  // sheet hanging straight down from the pins, so a picture does not jump as it moves.
-  Eigen::AlignedBox3d box;
-  const ClothState& state = simulator_.state();
-  for (int i = 0; i < simulator_.model().particle_count(); ++i) box.extend(state.position(i));
-  const GridClothOptions& g = options_.grid;
-  box.extend(Vec3(0.0, g.height - g.size, -0.5 * g.size));
-  box.extend(Vec3(g.size, g.height, 0.5 * g.size));
-  return box;
+  return cloth_focus_bounds(options_.grid, simulator_.state());
 }
 
 }  // namespace animkit

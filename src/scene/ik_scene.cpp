@@ -79,24 +79,35 @@ Result<void> IkScene::set_targets(std::vector<Vec3> targets) {
   return {};
 }
 
-void IkScene::describe(DrawList& out) const {
+void describe_arm_drawing(DrawList& out, std::span<const Vec3> joints,
+                          std::span<const Vec3> targets, std::span<const Vec3> path,
+                          const std::optional<Vec3>& unreachable_target) {
   // The grid sits just below the drawing plane y = 0 so the path never fights it for depth.
   out.add_ground_grid(-0.002, 12, 0.25, 0.5);
-  for (const Vec3& t : targets_) out.add_point(t, palette::target, 5.0f);
-  out.add_polyline(path_, palette::path, 3.0f);
-  const auto& joints = pose_.global_positions;
-  const double thickness = 0.04 * chain_.reach() / 2.6;
+  for (const Vec3& t : targets) out.add_point(t, palette::target, 5.0f);
+  for (std::size_t i = 1; i < path.size(); ++i)
+    out.add_line(path[i - 1], path[i], palette::path, 3.0f);
+  if (joints.empty()) return;
+  double reach = 0.0;
+  for (std::size_t i = 1; i < joints.size(); ++i) reach += (joints[i] - joints[i - 1]).norm();
+  const double thickness = 0.04 * reach / 2.6;  // the lab's arm (reach 2.6): 4 cm bones
   for (std::size_t i = 1; i < joints.size(); ++i) {
     out.add_bone_box(joints[i - 1], joints[i], thickness, palette::bone);
   }
   for (std::size_t i = 0; i + 1 < joints.size(); ++i) {
     out.add_sphere(joints[i], 0.75 * thickness, palette::joint);
   }
-  out.add_sphere(pose_.end_effector(), 0.6 * thickness, palette::end_effector);
-  if (last_ && !last_->result.reachable) {
-    out.add_line(pose_.end_effector(), last_->target, palette::unreachable, 2.0f);
-    out.add_point(last_->target, palette::unreachable, 14.0f);
+  out.add_sphere(joints.back(), 0.6 * thickness, palette::end_effector);
+  if (unreachable_target) {
+    out.add_line(joints.back(), *unreachable_target, palette::unreachable, 2.0f);
+    out.add_point(*unreachable_target, palette::unreachable, 14.0f);
   }
+}
+
+void IkScene::describe(DrawList& out) const {
+  std::optional<Vec3> unreachable;
+  if (last_ && !last_->result.reachable) unreachable = last_->target;
+  describe_arm_drawing(out, pose_.global_positions, targets_, path_, unreachable);
 }
 
 Eigen::AlignedBox3d IkScene::focus_bounds() const {

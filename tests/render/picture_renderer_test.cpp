@@ -40,8 +40,8 @@ TEST(PictureRenderer, IkSceneMidDrawingShowsTargetsPathAndArm) {
   DrawList list;
   scene->describe(list);
   auto& renderer = shared_renderer();
-  const OrbitCamera camera =
-      OrbitCamera::framing(scene->focus_bounds(), renderer.aspect(), 0.5, 0.9);
+  const OrbitCamera camera = OrbitCamera::framing(scene->focus_bounds(), renderer.aspect(),
+                                                  kIkPictureYaw, kIkPicturePitch);
   const Image image = renderer.render(list, camera);
   keep_for_inspection(image, "ik_mid_drawing");
 
@@ -88,8 +88,8 @@ TEST(PictureRenderer, UnreachableTargetIsMarked) {
   const Pixel* p = pixel_at(image, camera, Vec3(3.5, 0.0, 0.0));
   ASSERT_NE(p, nullptr);
   EXPECT_GT(p->r, 200);
-  EXPECT_TRUE(p->g > 100 && p->g < 180 && p->b < 60) << int(p->r) << "," << int(p->g) << ","
-                                                       << int(p->b);
+  EXPECT_TRUE(p->g > 100 && p->g < 180 && p->b < 60)
+      << int(p->r) << "," << int(p->g) << "," << int(p->b);
 }
 
 TEST(PictureRenderer, HangingClothCoversItsArea) {
@@ -99,8 +99,8 @@ TEST(PictureRenderer, HangingClothCoversItsArea) {
   DrawList list;
   scene->describe(list);
   auto& renderer = shared_renderer();
-  const OrbitCamera camera =
-      OrbitCamera::framing(scene->focus_bounds(), renderer.aspect(), -0.6, 0.35);
+  const OrbitCamera camera = OrbitCamera::framing(scene->focus_bounds(), renderer.aspect(),
+                                                  kClothPictureYaw, kClothPicturePitch);
   const Image image = renderer.render(list, camera);
   keep_for_inspection(image, "cloth_hanging");
 

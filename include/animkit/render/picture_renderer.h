@@ -18,7 +18,8 @@ class PictureRenderer {
   static Result<PictureRenderer> create(int width, int height);
 
   /// Draws `list` seen by `camera` over the background colour and reads the picture back.
-  Image render(const DrawList& list, const OrbitCamera& camera, Rgba background = palette::background);
+  Image render(const DrawList& list, const OrbitCamera& camera,
+               Rgba background = palette::background);
 
   int width() const { return target_.width(); }
   int height() const { return target_.height(); }

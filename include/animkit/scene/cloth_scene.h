@@ -13,18 +13,19 @@
 namespace animkit {
 
 struct ClothSceneOptions {
-  GridClothOptions grid;         ///< the lab's cloth by default
-  SimulationOptions simulation;  ///< implicit Euler with PCG by default
-  double time_step = 1.0 / 30.0; ///< seconds per frame (the lab: the frame's duration), > 0
+  GridClothOptions grid;          ///< the lab's cloth by default
+  SimulationOptions simulation;   ///< implicit Euler with PCG by default
+  double time_step = 1.0 / 30.0;  ///< seconds per frame (the lab: the frame's duration), > 0
 
   std::optional<Error> validate() const;
 };
 
 /// What describe() draws. The lab shows the springs; the surface is what users expect.
 struct ClothStyle {
-  bool surface = true;    ///< lit, two-sided, smooth-shaded triangles
-  bool springs = false;   ///< every spring as a line
-  bool particles = false; ///< every particle as a point (pinned ones are always marked)
+  bool surface = true;     ///< lit, two-sided, smooth-shaded triangles
+  bool springs = false;    ///< every spring as a line
+  bool particles = false;  ///< every particle as a point (pinned ones are always marked)
+  double floor_height = 0.0;  ///< y of the ground grid (below where the cloth can hang)
 };
 
 /// The mouse spring: pulls one particle towards a point with force
@@ -33,6 +34,22 @@ struct ClothDrag {
   int particle = 0;
   Vec3 target = Vec3::Zero();  ///< world space
 };
+
+/// Describes a cloth: ground grid, surface, springs and particles as `style` asks, pinned
+/// particles marked. Shared by ClothScene and the CLI's pictures.
+void describe_cloth(DrawList& out, const ClothModel& model, const ClothState& state,
+                    const ClothStyle& style = {});
+/// A box around where a grid cloth is and may swing to: its particles, the flat sheet and the
+/// sheet hanging (stretched) down from its pinned edge, so a picture does not jump as it moves.
+Eigen::AlignedBox3d cloth_focus_bounds(const GridClothOptions& grid, const ClothState& state);
+
+/// Where a grid cloth's floor goes: below the sheet hanging straight down from its pins,
+/// stretched by gravity, so the cloth never passes through the grid.
+double cloth_floor_height(const GridClothOptions& grid);
+
+/// The direction pictures of the cloth are taken from: facing the hanging sheet's front
+/// (orange) side, a little from above.
+inline constexpr double kClothPictureYaw = -1.05, kClothPicturePitch = 0.3;
 
 class ClothScene {
  public:
@@ -65,7 +82,8 @@ class ClothScene {
   const std::deque<double>& energy_history() const { return energy_; }
   static constexpr std::size_t kEnergyHistory = 600;
 
-  void describe(DrawList& out, const ClothStyle& style = {}) const;
+  /// Describes the cloth (style.floor_height is set from the grid) and the mouse spring.
+  void describe(DrawList& out, ClothStyle style = {}) const;
   /// A box around where the cloth is and may swing to: what a picture should frame.
   Eigen::AlignedBox3d focus_bounds() const;
 

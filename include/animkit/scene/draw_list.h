@@ -45,15 +45,15 @@ struct LitVertex {
 };
 
 struct LineSegment {
-  Vec3f a, b;              ///< world space
+  Vec3f a, b;  ///< world space
   Rgba color;
-  float width_px = 1.0f;   ///< on-screen width in pixels, > 0
+  float width_px = 1.0f;  ///< on-screen width in pixels, > 0
 };
 
 struct PointMarker {
-  Vec3f position;          ///< world space
+  Vec3f position;  ///< world space
   Rgba color;
-  float size_px = 6.0f;    ///< on-screen diameter in pixels, > 0
+  float size_px = 6.0f;  ///< on-screen diameter in pixels, > 0
 };
 
 class DrawList {

@@ -3,6 +3,7 @@
 // time, as the lab's app does, plus a free target the user can drag. The viewer and the CLI's
 // pictures both drive this class; it holds the state, they only show it.
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "animkit/kinematics/ik_solver.h"
@@ -21,6 +22,16 @@ struct IkSolveReadout {
   IkResult result;
   double solve_time_us = 0.0;
 };
+
+/// Describes an arm drawing: ground grid, targets (green), the drawn path (red), the arm through
+/// `joints` (bones as boxes, joints as spheres) and, when given, an unreachable target
+/// (orange, joined to the end effector). Shared by IkScene and the CLI's pictures.
+void describe_arm_drawing(DrawList& out, std::span<const Vec3> joints,
+                          std::span<const Vec3> targets, std::span<const Vec3> path,
+                          const std::optional<Vec3>& unreachable_target = std::nullopt);
+
+/// The direction pictures of the arm are taken from: high enough to see the drawing plane.
+inline constexpr double kIkPictureYaw = 0.5, kIkPicturePitch = 0.9;
 
 class IkScene {
  public:

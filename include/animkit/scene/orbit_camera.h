@@ -16,10 +16,10 @@ struct Ray {
 
 struct OrbitCamera {
   Vec3 focus = Vec3(0.0, 0.8, 0.0);  ///< world point the camera looks at
-  double yaw = 0.6;        ///< radians about +y; 0 looks from +z towards -z
-  double pitch = 0.45;     ///< radians above the horizon, clamped to (-1.55, 1.55)
-  double distance = 6.0;   ///< from the focus (scene units), > 0
-  double fov_y = 0.7;      ///< vertical field of view (radians)
+  double yaw = 0.6;                  ///< radians about +y; 0 looks from +z towards -z
+  double pitch = 0.45;               ///< radians above the horizon, clamped to (-1.55, 1.55)
+  double distance = 6.0;             ///< from the focus (scene units), > 0
+  double fov_y = 0.7;                ///< vertical field of view (radians)
 
   Vec3 eye() const;
   Eigen::Matrix4d view() const;

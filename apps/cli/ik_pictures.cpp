@@ -1,0 +1,48 @@
+#include "ik_pictures.h"
+
+#include "animkit/scene/ik_scene.h"
+
+namespace animkit::cli {
+
+namespace {
+
+// Frame `frame`: its pose, the targets, the path its lap has drawn so far, the target marked
+// when it was out of reach.
+void describe_frame(DrawList& list, std::span<const Vec3> targets, const DrawingFrame& frame,
+                    std::span<const Vec3> path) {
+  std::optional<Vec3> unreachable;
+  if (!frame.ik.reachable) unreachable = frame.target;
+  list.clear();
+  describe_arm_drawing(list, frame.joint_positions, targets, path, unreachable);
+}
+
+}  // namespace
+
+Result<void> render_ik_pictures(std::span<const Vec3> targets, const DrawingRun& run,
+                                PictureOutput& pictures, const std::filesystem::path& out) {
+  if (run.frames.empty()) return {};
+  // One camera for the whole run, so the video does not jump: it frames the targets and every
+  // pose the arm took.
+  Eigen::AlignedBox3d bounds;
+  for (const Vec3& t : targets) bounds.extend(t);
+  for (const DrawingFrame& frame : run.frames) {
+    for (const Vec3& p : frame.joint_positions) bounds.extend(p);
+  }
+  const OrbitCamera camera =
+      OrbitCamera::framing(bounds, pictures.aspect(), kIkPictureYaw, kIkPicturePitch);
+  DrawList list;
+  std::vector<Vec3> path;  // the current lap's end effectors, up to the frame drawn
+  for (std::size_t f = 0; f < run.frames.size(); ++f) {
+    if (f > 0 && run.frames[f - 1].lap != run.frames[f].lap) path.clear();
+    path.push_back(run.frames[f].end_effector);
+    if (pictures.wants_video()) {
+      describe_frame(list, targets, run.frames[f], path);
+      if (auto ok = pictures.add_video_frame(list, camera); !ok) return ok;
+    }
+  }
+  if (auto ok = pictures.finish_video(); !ok) return ok;
+  describe_frame(list, targets, run.frames.back(), path);
+  return pictures.write_png(out / "drawing.png", list, camera);
+}
+
+}  // namespace animkit::cli

@@ -1,0 +1,18 @@
+#pragma once
+#include <filesystem>
+#include <span>
+
+#include "animkit/kinematics/drawing_session.h"
+#include "picture_output.h"
+
+namespace animkit::cli {
+
+/// Frames per second of an IK video: one target per frame, as the lab's app draws.
+constexpr double kIkVideoFps = 60.0;
+
+/// Renders the run's video frames (if asked for) and DIR/drawing.png: the arm in its final
+/// pose over the targets and the last lap's path, from a camera framing the whole run.
+Result<void> render_ik_pictures(std::span<const Vec3> targets, const DrawingRun& run,
+                                PictureOutput& pictures, const std::filesystem::path& out);
+
+}  // namespace animkit::cli
