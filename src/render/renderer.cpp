@@ -94,10 +94,13 @@ Result<Renderer> Renderer::create() {
 }
 
 void Renderer::clear(const Viewport& viewport, Rgba background) const {
-  glViewport(0, 0, viewport.width, viewport.height);
+  glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(viewport.x, viewport.y, viewport.width, viewport.height);
   glClearColor(background.r, background.g, background.b, background.a);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 void Renderer::draw(const DrawList& list, const Eigen::Matrix4d& view,
@@ -105,7 +108,7 @@ void Renderer::draw(const DrawList& list, const Eigen::Matrix4d& view,
   const Eigen::Matrix4f view_projection = (projection * view).cast<float>();
   const Eigen::Vector3f eye =
       (-view.block<3, 3>(0, 0).transpose() * view.block<3, 1>(0, 3)).cast<float>();
-  glViewport(0, 0, viewport.width, viewport.height);
+  glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glDisable(GL_CULL_FACE);

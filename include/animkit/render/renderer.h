@@ -10,8 +10,11 @@
 
 namespace animkit {
 
+/// The rectangle of the framebuffer to draw into, in pixels from its bottom-left corner (as
+/// OpenGL counts them).
 struct Viewport {
-  int width = 0, height = 0;  ///< pixels
+  int width = 0, height = 0;
+  int x = 0, y = 0;
 };
 
 class Renderer {
@@ -24,7 +27,7 @@ class Renderer {
   Renderer& operator=(Renderer&&) noexcept;
   ~Renderer();
 
-  /// Clears the bound framebuffer to `background` (colour and depth).
+  /// Clears the viewport's rectangle of the bound framebuffer to `background` (colour, depth).
   void clear(const Viewport& viewport, Rgba background) const;
   /// Draws `list`: triangles, then points, then lines (a drawn path covers the targets under
   /// it, as in the lab). Markers are pulled slightly towards the eye, so they stay visible on

@@ -1,0 +1,105 @@
+// animkit-viewer: the lab's two scenes live on screen, or captured to a PNG without one.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "hosts.h"
+
+namespace animkit::viewer {
+
+int report_error(const std::string& message, int code) {
+  std::fprintf(stderr, "animkit-viewer: error: %s\n", message.c_str());
+  return code;
+}
+
+namespace {
+
+int run(int argc, char** argv) {
+  CLI::App app{
+      "animkit-viewer: the lab's inverse-kinematics arm and mass-spring cloth, live. With "
+      "--capture it runs headless (no display needed) and writes a picture."};
+  ViewerOptions options;
+  std::string scene = "ik", solver = "ccd", integrator(to_string(IntegratorKind::implicit_pcg));
+  std::string size;
+  int frames = 0;
+  std::string capture;
+  app.add_option("--scene", scene, "Scene to open: ik or cloth")->capture_default_str();
+  app.add_option("--shape", options.ik.shape,
+                 "IK: shape to draw (circle, square, heart, "
+                 "triangle, star)")
+      ->capture_default_str();
+  app.add_option("--solver", solver, "IK: ccd or fabrik")->capture_default_str();
+  GridClothOptions& grid = options.cloth.grid;
+  app.add_option("--grid", grid.cells, "Cloth: cells per side")->capture_default_str();
+  app.add_option("--integrator", integrator, "Cloth: explicit, implicit-direct or implicit-pcg")
+      ->capture_default_str();
+  app.add_option("--mass", grid.mass, "Cloth: mass per particle")->capture_default_str();
+  app.add_option("--stiffness", grid.stiffness, "Cloth: spring stiffness")->capture_default_str();
+  app.add_option("--damping", grid.damping, "Cloth: spring damping")->capture_default_str();
+  app.add_option("--gravity", grid.gravity, "Cloth: gravity along -y")->capture_default_str();
+  app.add_option("--dt", options.cloth.time_step, "Cloth: seconds per step (one per frame)")
+      ->capture_default_str();
+  app.add_flag("--springs", options.cloth_style.springs, "Cloth: draw every spring");
+  app.add_flag("--particles", options.cloth_style.particles, "Cloth: draw every particle");
+  app.add_option("--frames", frames,
+                 "Frames to run before exiting (0: until the window is closed; --capture "
+                 "needs at least 1)")
+      ->capture_default_str();
+  app.add_option("--capture", capture,
+                 "Run --frames frames offscreen and write the last one (side panel included) "
+                 "to this PNG, then exit; no display needed");
+  app.add_option("--size", size, "Window or picture size WIDTHxHEIGHT (default 1280x800)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    return report_error(std::string(e.what()) + " (see animkit-viewer --help)", 2);
+  }
+
+  if (scene == "ik") {
+    options.scene = SceneKind::ik;
+  } else if (scene == "cloth") {
+    options.scene = SceneKind::cloth;
+  } else {
+    return report_error("unknown scene '" + scene + "' (expected ik or cloth)", 2);
+  }
+  const auto ik_solver = parse_ik_solver(solver);
+  if (!ik_solver)
+    return report_error("unknown solver '" + solver + "' (expected ccd or fabrik)", 2);
+  options.ik.solver = *ik_solver;
+  const auto kind = parse_integrator(integrator);
+  if (!kind) {
+    return report_error("unknown integrator '" + integrator +
+                            "' (expected explicit, implicit-direct or implicit-pcg)",
+                        2);
+  }
+  options.cloth.simulation.integrator = *kind;
+  if (!size.empty()) {
+    char tail = 0;
+    if (std::sscanf(size.c_str(), "%dx%d%c", &options.width, &options.height, &tail) != 2 ||
+        options.width < 400 || options.height < 300 || options.width > 8192 ||
+        options.height > 8192) {
+      return report_error(
+          "--size must be WIDTHxHEIGHT between 400x300 and 8192x8192, got '" + size + "'", 2);
+    }
+  }
+  if (frames < 0)
+    return report_error("--frames must be 0 or more, got " + std::to_string(frames), 2);
+  if (!capture.empty()) {
+    if (frames == 0) return report_error("--capture needs --frames N with N >= 1", 2);
+    return run_headless(options, frames, capture);
+  }
+  return run_window(options, frames);
+}
+
+}  // namespace
+}  // namespace animkit::viewer
+
+int main(int argc, char** argv) {
+  try {
+    return animkit::viewer::run(argc, argv);
+  } catch (const std::exception& e) {
+    return animkit::viewer::report_error(e.what(), 1);
+  }
+}

@@ -1,0 +1,144 @@
+#include "viewer_app.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace animkit::viewer {
+
+namespace {
+constexpr double kOrbitRadiansPerPx = 0.008;
+constexpr double kClickSlopPx = 3.0;  // a press that moves less is a click
+}  // namespace
+
+ViewerApp::ViewerApp(Renderer renderer, IkView ik, ClothView cloth, SceneKind scene)
+    : renderer_(std::move(renderer)), ik_(std::move(ik)), cloth_(std::move(cloth)), scene_(scene) {}
+
+Result<ViewerApp> ViewerApp::create(const ViewerOptions& options) {
+  auto ik = IkView::create(options.ik);
+  if (!ik) return fail(ik.error().message);
+  auto cloth = ClothView::create(options.cloth);
+  if (!cloth) return fail(cloth.error().message);
+  cloth->set_style(options.cloth_style);
+  auto renderer = Renderer::create();
+  if (!renderer) return fail(renderer.error().message);
+  return ViewerApp(std::move(*renderer), std::move(*ik), std::move(*cloth), options.scene);
+}
+
+SceneView& ViewerApp::current() {
+  if (scene_ == SceneKind::ik) return ik_;
+  return cloth_;
+}
+
+void ViewerApp::reset_camera() {
+  const double view_width = std::max(1, width_ - kPanelWidth);
+  camera_ = OrbitCamera::framing(current().focus_bounds(), view_width / height_,
+                                 current().default_yaw(), current().default_pitch());
+  camera_placed_ = true;
+}
+
+Cursor ViewerApp::cursor_at(double x, double y) const {
+  Cursor cursor;
+  cursor.x = x - kPanelWidth;
+  cursor.y = y;
+  cursor.view_width = std::max(1, width_ - kPanelWidth);
+  cursor.view_height = height_;
+  cursor.camera = &camera_;
+  cursor.ray = camera_.ray_through_pixel(cursor.x, cursor.y, cursor.view_width, cursor.view_height);
+  return cursor;
+}
+
+void ViewerApp::handle_mouse() {
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool mouse_valid = ImGui::IsMousePosValid(&io.MousePos);
+  const bool in_view = mouse_valid && !io.WantCaptureMouse && io.MousePos.x >= kPanelWidth;
+  const Cursor cursor = cursor_at(io.MousePos.x, io.MousePos.y);
+
+  if (in_view && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    left_down_ = true;
+    moved_ = false;
+    press_x_ = io.MousePos.x;
+    press_y_ = io.MousePos.y;
+    scene_grabbed_ = current().press(cursor);
+  }
+  if (left_down_ && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    if (std::hypot(io.MousePos.x - press_x_, io.MousePos.y - press_y_) > kClickSlopPx) {
+      moved_ = true;
+    }
+    if (scene_grabbed_) {
+      if (moved_) current().drag(cursor);
+    } else {
+      camera_.orbit(-kOrbitRadiansPerPx * io.MouseDelta.x, kOrbitRadiansPerPx * io.MouseDelta.y);
+    }
+  }
+  if (left_down_ && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+    if (scene_grabbed_) current().release(cursor, moved_);
+    left_down_ = scene_grabbed_ = false;
+  }
+  // Right or middle drag pans; the wheel zooms.
+  const bool pan_button =
+      ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle);
+  if (in_view && (ImGui::IsMouseClicked(ImGuiMouseButton_Right) ||
+                  ImGui::IsMouseClicked(ImGuiMouseButton_Middle))) {
+    panning_ = true;
+  }
+  if (!pan_button) panning_ = false;
+  if (panning_) camera_.pan(io.MouseDelta.x, io.MouseDelta.y, height_);
+  if (in_view && io.MouseWheel != 0.0f) camera_.zoom(std::pow(0.88, io.MouseWheel));
+}
+
+void ViewerApp::side_panel() {
+  ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
+  ImGui::SetNextWindowSize(ImVec2(static_cast<float>(kPanelWidth), static_cast<float>(height_)));
+  ImGui::Begin("animkit", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  int scene = scene_ == SceneKind::ik ? 0 : 1;
+  ImGui::RadioButton("Inverse Kinematics", &scene, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("Mass-Spring Cloth", &scene, 1);
+  const SceneKind chosen = scene == 0 ? SceneKind::ik : SceneKind::cloth;
+  if (chosen != scene_) {
+    scene_ = chosen;
+    reset_camera();
+  }
+  ImGui::Separator();
+  ImGui::PushItemWidth(-130.0f);
+  current().panel();
+  ImGui::PopItemWidth();
+  ImGui::Separator();
+  if (ImGui::Button("Reset view")) reset_camera();
+  ImGui::SameLine();
+  ImGui::TextDisabled("%.0f fps", static_cast<double>(ImGui::GetIO().Framerate));
+  ImGui::TextWrapped(
+      "Camera: left drag orbits, right or middle drag pans, the wheel zooms, Home or R resets.");
+  ImGui::End();
+}
+
+void ViewerApp::update(int width, int height) {
+  width_ = std::max(1, width);
+  height_ = std::max(1, height);
+  if (!camera_placed_) reset_camera();
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!io.WantCaptureKeyboard) {
+    bool reset = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home));
+    for (ImWchar c : io.InputQueueCharacters) reset = reset || c == 'r' || c == 'R';
+    if (reset) reset_camera();
+  }
+  handle_mouse();
+  current().advance(static_cast<double>(io.DeltaTime));
+  side_panel();
+}
+
+void ViewerApp::render(int framebuffer_width, int framebuffer_height) {
+  const double scale = static_cast<double>(framebuffer_width) / width_;
+  const int panel = static_cast<int>(std::lround(kPanelWidth * scale));
+  renderer_.clear({framebuffer_width, framebuffer_height}, palette::background);
+  const Viewport view{std::max(1, framebuffer_width - panel), framebuffer_height, panel, 0};
+  DrawList list;
+  current().describe(list);
+  renderer_.draw(list, camera_.view(),
+                 camera_.projection(static_cast<double>(view.width) / view.height), view);
+}
+
+}  // namespace animkit::viewer

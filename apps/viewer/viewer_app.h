@@ -1,0 +1,62 @@
+#pragma once
+// The viewer's frame, shared by the window and the headless capture: both scenes, the orbit
+// camera, the side panel and the mouse. Hosts own the OpenGL context and Dear ImGui's
+// platform side; they call update() between ImGui::NewFrame() and ImGui::Render(), then
+// render() before drawing ImGui's draw data.
+#include <memory>
+
+#include "animkit/render/renderer.h"
+#include "cloth_view.h"
+#include "ik_view.h"
+
+namespace animkit::viewer {
+
+enum class SceneKind { ik, cloth };
+
+struct ViewerOptions {
+  SceneKind scene = SceneKind::ik;
+  IkViewOptions ik;
+  ClothSceneOptions cloth;
+  ClothStyle cloth_style;
+  int width = 1280, height = 800;  ///< window or picture size in pixels
+};
+
+class ViewerApp {
+ public:
+  /// Builds both scenes and the renderer (an OpenGL context must be current). Errors: bad
+  /// scene options, a renderer that cannot start.
+  static Result<ViewerApp> create(const ViewerOptions& options);
+
+  /// Reads the mouse and keys from ImGui's IO, advances the current scene one frame and lays
+  /// out the side panel. `width` x `height`: the window in ImGui's (logical) pixels.
+  void update(int width, int height);
+  /// Draws the 3D view into the bound framebuffer, `framebuffer_width` x `framebuffer_height`
+  /// pixels (more than the logical size on high-DPI screens).
+  void render(int framebuffer_width, int framebuffer_height);
+
+  /// Frames the current scene from its default direction.
+  void reset_camera();
+
+ private:
+  ViewerApp(Renderer renderer, IkView ik, ClothView cloth, SceneKind scene);
+  SceneView& current();
+  Cursor cursor_at(double x, double y) const;
+  void handle_mouse();
+  void side_panel();
+
+  Renderer renderer_;
+  IkView ik_;
+  ClothView cloth_;
+  SceneKind scene_;
+  OrbitCamera camera_;
+  bool camera_placed_ = false;
+  int width_ = 1, height_ = 1;  // window, logical pixels
+  // The press in progress in the 3D view.
+  bool left_down_ = false, scene_grabbed_ = false, moved_ = false, panning_ = false;
+  double press_x_ = 0.0, press_y_ = 0.0;
+};
+
+/// Width of the side panel in logical pixels; the 3D view fills the rest of the window.
+constexpr int kPanelWidth = 380;
+
+}  // namespace animkit::viewer
