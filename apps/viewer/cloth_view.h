@@ -11,6 +11,7 @@ class ClothView final : public SceneView {
 
   const char* name() const override { return "Mass-Spring Cloth"; }
   void advance(double seconds) override;
+  void toggle_playing() override { playing_ = !playing_; }
   void panel() override;
   bool press(const Cursor& cursor) override;
   void drag(const Cursor& cursor) override;

@@ -19,6 +19,7 @@ class IkView final : public SceneView {
 
   const char* name() const override { return "Inverse Kinematics"; }
   void advance(double seconds) override;
+  void toggle_playing() override { playing_ = !playing_; }
   void panel() override;
   bool press(const Cursor& cursor) override;
   void drag(const Cursor& cursor) override;

@@ -24,6 +24,8 @@ class SceneView {
   virtual const char* name() const = 0;
   /// Runs the scene for one displayed frame of `seconds` (when it is playing).
   virtual void advance(double seconds) = 0;
+  /// Start / pause (the Space key).
+  virtual void toggle_playing() = 0;
   /// Draws the side panel's controls and readouts (inside an open ImGui window).
   virtual void panel() = 0;
   /// A left press in the 3D view: true when the scene takes it (grabs a handle), false to let

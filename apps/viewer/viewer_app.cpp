@@ -111,7 +111,8 @@ void ViewerApp::side_panel() {
   ImGui::SameLine();
   ImGui::TextDisabled("%.0f fps", static_cast<double>(ImGui::GetIO().Framerate));
   ImGui::TextWrapped(
-      "Camera: left drag orbits, right or middle drag pans, the wheel zooms, Home or R resets.");
+      "Camera: left drag orbits, right or middle drag pans, the wheel zooms, Home or R resets. "
+      "Space starts and pauses.");
   ImGui::End();
 }
 
@@ -124,6 +125,7 @@ void ViewerApp::update(int width, int height) {
     bool reset = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home));
     for (ImWchar c : io.InputQueueCharacters) reset = reset || c == 'r' || c == 'R';
     if (reset) reset_camera();
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) current().toggle_playing();
   }
   handle_mouse();
   current().advance(static_cast<double>(io.DeltaTime));

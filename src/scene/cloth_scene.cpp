@@ -1,5 +1,6 @@
 #include "animkit/scene/cloth_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -9,7 +10,7 @@
 namespace animkit {
 
 namespace {
-constexpr double kDragStiffness = 60.0;  // s^-2, per unit mass
+constexpr double kDragStiffness = 200.0;  // s^-2, per unit mass
 }
 
 std::optional<Error> ClothSceneOptions::validate() const {
@@ -123,8 +124,13 @@ Result<StepReport> ClothScene::step() {
     const int p = drag_->particle;
     const double m = simulator_.model().mass[p];
     Eigen::VectorXd forces = Eigen::VectorXd::Zero(state.positions.size());
-    forces.segment<3>(3 * p) = m * (kDragStiffness * (drag_->target - state.position(p)) -
-                                    2.0 * std::sqrt(kDragStiffness) * state.velocity(p));
+    // The force is explicit (held over the step), so the spring must stay stable on its own:
+    // h sqrt(k) <= 1/2 keeps both the spring and its damping (h c <= 1) well inside the
+    // explicit stability limit (2) at any time step.
+    const double h = options_.time_step;
+    const double k = std::min(kDragStiffness, 0.25 / (h * h));
+    forces.segment<3>(3 * p) =
+        m * (k * (drag_->target - state.position(p)) - 2.0 * std::sqrt(k) * state.velocity(p));
     if (auto set = simulator_.set_external_forces(forces); !set) return fail(set.error().message);
   }
   auto report = simulator_.step(options_.time_step);

@@ -98,6 +98,7 @@ void describe_arm_drawing(DrawList& out, std::span<const Vec3> joints,
     out.add_sphere(joints[i], 0.75 * thickness, palette::joint);
   }
   out.add_sphere(joints.back(), 0.6 * thickness, palette::end_effector);
+  out.add_point(joints.back(), palette::end_effector, 9.0f);  // the pen, and the drag handle
   if (unreachable_target) {
     out.add_line(joints.back(), *unreachable_target, palette::unreachable, 2.0f);
     out.add_point(*unreachable_target, palette::unreachable, 14.0f);

@@ -29,7 +29,8 @@ struct ClothStyle {
 };
 
 /// The mouse spring: pulls one particle towards a point with force
-/// m (k (target - x) - c v), k = 60 s^-2, c = 2 sqrt(k) s^-1 (critically damped on its own).
+/// m (k (target - x) - c v), k = min(200 s^-2, 1 / (4 h^2)) for the time step h (stable at any
+/// step), c = 2 sqrt(k) (critically damped on its own).
 struct ClothDrag {
   int particle = 0;
   Vec3 target = Vec3::Zero();  ///< world space
