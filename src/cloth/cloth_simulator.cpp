@@ -129,7 +129,7 @@ Result<void> ClothSimulator::set_external_forces(const Eigen::VectorXd& forces) 
     return fail("external forces have " + std::to_string(forces.size()) +
                 " entries but the cloth needs " + std::to_string(size));
   }
-  if (!forces.allFinite()) return fail("external forces have a non-finite value");
+  if (!all_finite(forces)) return fail("external forces have a non-finite value");
   impl_->external_forces = forces;
   return {};
 }
@@ -144,7 +144,7 @@ Result<void> ClothSimulator::set_state(const ClothState& state) {
     return fail("state has " + std::to_string(state.positions.size() / 3) +
                 " particles but the cloth has " + std::to_string(size / 3));
   }
-  if (!state.positions.allFinite() || !state.velocities.allFinite()) {
+  if (!all_finite(state.positions) || !all_finite(state.velocities)) {
     return fail("state has a non-finite position or velocity");
   }
   impl_->state = state;

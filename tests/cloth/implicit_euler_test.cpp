@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "animkit/cloth/cloth_simulator.h"
@@ -324,6 +325,53 @@ TEST(ClothSimulator, ExplicitEulerWithTheLabsSubstepsIsStableAndAgreesWithImplic
   // First-order methods on the same motion: close, not equal (implicit Euler damps).
   EXPECT_LT((explicit_euler.state().positions - implicit.state().positions).cwiseAbs().maxCoeff(),
             0.05);
+}
+
+}  // namespace
+}  // namespace animkit
+
+namespace animkit {
+namespace {
+
+// A constant external force on a lone particle gives exact uniform acceleration under both
+// integrators (implicit Euler: x_{n+1} = x_n + h v_n + h^2 a), as gravity does.
+TEST(ClothSimulator, ExternalForcesAccelerateLikeGravity) {
+  ClothDesc desc;
+  desc.particles = {{Vec3::Zero(), Vec3::Zero(), 2.0, false},
+                    {Vec3(1, 0, 0), Vec3::Zero(), 1.0, true}};
+  desc.gravity = 0.0;
+  for (IntegratorKind kind : {IntegratorKind::implicit_pcg, IntegratorKind::explicit_euler}) {
+    auto sim = ClothSimulator::create(desc, {kind, 1, {}});
+    ASSERT_TRUE(sim.has_value()) << sim.error().message;
+    Eigen::VectorXd forces = Eigen::VectorXd::Zero(6);
+    forces.segment<3>(0) = Vec3(4.0, 0.0, -2.0);  // a = (2, 0, -1)
+    forces.segment<3>(3) = Vec3(9.0, 9.0, 9.0);   // on the pinned particle: no effect
+    ASSERT_TRUE(sim->set_external_forces(forces).has_value());
+    const double h = 0.1;
+    for (int n = 0; n < 10; ++n) ASSERT_TRUE(sim->step(h).has_value());
+    // Velocity after 10 steps is 10 h a; position sums h v_k for k = 1..10: h^2 a 55.
+    EXPECT_NEAR(sim->state().velocity(0).x(), 10 * h * 2.0, 1e-9);
+    EXPECT_NEAR(sim->state().position(0).x(), 55 * h * h * 2.0, 1e-9);
+    EXPECT_NEAR(sim->state().position(0).z(), -55 * h * h * 1.0, 1e-9);
+    EXPECT_EQ(sim->state().position(1), Vec3(1, 0, 0));
+    sim->clear_external_forces();
+    const Vec3 v = sim->state().velocity(0);
+    ASSERT_TRUE(sim->step(h).has_value());
+    EXPECT_NEAR((sim->state().velocity(0) - v).norm(), 0.0, 1e-9);
+  }
+}
+
+TEST(ClothSimulator, RejectsBadExternalForces) {
+  auto sim = ClothSimulator::create(make_grid_cloth({.cells = 2}), {});
+  ASSERT_TRUE(sim.has_value());
+  const auto short_forces = sim->set_external_forces(Eigen::VectorXd::Zero(5));
+  ASSERT_FALSE(short_forces.has_value());
+  EXPECT_EQ(short_forces.error().message, "external forces have 5 entries but the cloth needs 27");
+  Eigen::VectorXd nan = Eigen::VectorXd::Zero(27);
+  nan[4] = std::numeric_limits<double>::infinity();
+  const auto bad = sim->set_external_forces(nan);
+  ASSERT_FALSE(bad.has_value());
+  EXPECT_EQ(bad.error().message, "external forces have a non-finite value");
 }
 
 }  // namespace

@@ -18,6 +18,15 @@ inline bool is_finite(const Quat& q) {
          std::isfinite(q.z());
 }
 
+/// Every entry finite. Unlike Eigen's allFinite() (which computes x - x), never raises a
+/// floating-point exception on inf, so it is safe under the tests' FP traps.
+inline bool all_finite(const Eigen::VectorXd& v) {
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    if (!std::isfinite(v[i])) return false;
+  }
+  return true;
+}
+
 /// A number as users write it, for error messages: "1e-09", "0.2", "nan" (%g, unlike
 /// std::to_string, which prints 1e-9 as "0.000000").
 inline std::string format_number(double value) {
