@@ -4,9 +4,14 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake make git
-  libeigen3-dev nlohmann-json3-dev libcli11-dev
+  build-essential cmake make git pkg-config
+  libeigen3-dev nlohmann-json3-dev libcli11-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  # Pictures and the viewer: OpenGL through glvnd, Mesa's software renderer (llvmpipe) for EGL
+  # without a display and GLX in a window, GLFW and Dear ImGui.
+  libgl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0 libglfw3-dev libimgui-dev
+  # Videos (--video) and the viewer's window test under a virtual display.
+  ffmpeg xvfb xauth
 )
 
 missing=()

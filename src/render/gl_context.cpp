@@ -115,7 +115,10 @@ struct OffscreenContext::Impl {
       eglMakeCurrent(egl.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
       eglDestroyContext(egl.display, egl.context);
       if (egl.surface != EGL_NO_SURFACE) eglDestroySurface(egl.display, egl.surface);
-      eglTerminate(egl.display);
+      // The display is not terminated: EGL displays are shared by the whole process (another
+      // context may use it), and terminating unloads Mesa's driver, which the next context
+      // would load again. Its few driver allocations then stay reachable until exit.
+      eglReleaseThread();
     }
     if (window) {
       glfwDestroyWindow(window);
