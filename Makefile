@@ -8,7 +8,7 @@ CMAKE  := cmake
 RELEASE_DIR  := build/release
 SANITIZE_DIR := build/sanitize
 
-.PHONY: deps build demo test test-release test-sanitize bench clean
+.PHONY: deps build demo viewer test test-release test-sanitize bench clean
 
 deps:
 	bash scripts/install-deps.sh
@@ -21,6 +21,12 @@ demo: deps
 	$(CMAKE) -S . -B $(RELEASE_DIR) -DCMAKE_BUILD_TYPE=Release
 	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target animkit-cli
 	$(RELEASE_DIR)/apps/cli/animkit demo --out $(OUT)
+
+# Opens animkit-viewer in a window (needs a display; see the README for --capture without one).
+viewer: deps
+	$(CMAKE) -S . -B $(RELEASE_DIR) -DCMAKE_BUILD_TYPE=Release
+	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target animkit-viewer
+	$(RELEASE_DIR)/apps/viewer/animkit-viewer
 
 test-release: deps
 	$(CMAKE) -S . -B $(RELEASE_DIR) -DCMAKE_BUILD_TYPE=Release

@@ -23,6 +23,7 @@ class ClothView final : public SceneView {
 
   ClothScene& scene() { return scene_; }
   void set_style(const ClothStyle& style) { style_ = style; }
+  void set_playing(bool playing) { playing_ = playing; }
 
  private:
   explicit ClothView(ClothScene scene);

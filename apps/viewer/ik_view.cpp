@@ -126,8 +126,10 @@ void IkView::follow_cursor(const Cursor& cursor) {
 
 void IkView::describe(DrawList& out) const {
   scene_.describe(out);
-  if (dragging_ && scene_.last_solve()) {
-    out.add_point(scene_.last_solve()->target, palette::end_effector, 12.0f);
+  // The dragged target, unless the scene already marks it as out of reach.
+  const auto& last = scene_.last_solve();
+  if (dragging_ && last && last->result.reachable) {
+    out.add_point(last->target, palette::end_effector, 12.0f);
   }
 }
 

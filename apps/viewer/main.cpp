@@ -40,6 +40,7 @@ int run(int argc, char** argv) {
   app.add_option("--gravity", grid.gravity, "Cloth: gravity along -y")->capture_default_str();
   app.add_option("--dt", options.cloth.time_step, "Cloth: seconds per step (one per frame)")
       ->capture_default_str();
+  app.add_flag("--paused", options.paused, "Start with the scene paused (Space starts it)");
   app.add_flag("--springs", options.cloth_style.springs, "Cloth: draw every spring");
   app.add_flag("--particles", options.cloth_style.particles, "Cloth: draw every particle");
   app.add_option("--frames", frames,

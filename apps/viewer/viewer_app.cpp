@@ -21,6 +21,10 @@ Result<ViewerApp> ViewerApp::create(const ViewerOptions& options) {
   auto cloth = ClothView::create(options.cloth);
   if (!cloth) return fail(cloth.error().message);
   cloth->set_style(options.cloth_style);
+  if (options.paused) {
+    ik->set_playing(false);
+    cloth->set_playing(false);
+  }
   auto renderer = Renderer::create();
   if (!renderer) return fail(renderer.error().message);
   return ViewerApp(std::move(*renderer), std::move(*ik), std::move(*cloth), options.scene);

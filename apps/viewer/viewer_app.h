@@ -19,6 +19,7 @@ struct ViewerOptions {
   ClothSceneOptions cloth;
   ClothStyle cloth_style;
   int width = 1280, height = 800;  ///< window or picture size in pixels
+  bool paused = false;             ///< start with the scene paused
 };
 
 class ViewerApp {
