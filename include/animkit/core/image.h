@@ -21,4 +21,18 @@ struct Image {
   bool empty() const { return pixels.empty(); }
 };
 
+/// An 8-bit grayscale picture (0 black .. 255 white), rows top to bottom: what the image and
+/// text drawings start from.
+struct GrayImage {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> pixels;  ///< width * height, row-major, row 0 at the top
+
+  GrayImage() = default;
+  GrayImage(int w, int h, std::uint8_t fill = 255)
+      : width(w), height(h), pixels(static_cast<std::size_t>(w) * h, fill) {}
+  std::uint8_t& at(int x, int y) { return pixels[static_cast<std::size_t>(y) * width + x]; }
+  std::uint8_t at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
+  bool empty() const { return pixels.empty(); }
+};
+
 }  // namespace animkit
