@@ -48,13 +48,14 @@ int run_ik_shapes(const DemoArgs& args) {
     for (IkSolverKind solver : all_ik_solvers()) {
       DrawingOptions options;
       options.solver = solver;
-      const std::vector<Vec3> targets = lab_shape_targets(shape);
-      const auto run = run_drawing(*chain, targets, options);
+      const Trajectory trajectory = Trajectory::all_pen_down(lab_shape_targets(shape));
+      const auto run = run_drawing(*chain, trajectory.targets, options);
       if (!run) return report_error(run.error().message);
-      const IkRunLabel label{std::string(to_string(shape)), std::string(to_string(solver))};
+      const IkRunLabel label{std::string(to_string(shape)), std::string(to_string(solver)),
+                             std::nullopt};
       const std::filesystem::path dir = ik_dir / (label.shape + "-" + label.solver);
       if (auto ok = ensure_output_directory(dir); !ok) return report_error(ok.error().message);
-      if (auto ok = render_ik_pictures(targets, *run, *pictures, dir); !ok) {
+      if (auto ok = render_ik_pictures(trajectory, *run, *pictures, dir); !ok) {
         return report_error(ok.error().message);
       }
       const auto written = write_ik_reports(dir, label, options, *run);

@@ -1,16 +1,18 @@
 #include "ik_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "animkit/core/validation.h"
 #include "animkit/io/atomic_write.h"
+#include "animkit/io/drawing_source.h"
 #include "animkit/io/ik_report.h"
 #include "animkit/kinematics/chain.h"
 #include "animkit/kinematics/drawing_session.h"
-#include "animkit/trajectory/lab_shapes.h"
 #include "cli_errors.h"
+#include "drawing_args.h"
 #include "ik_pictures.h"
 #include "ik_table.h"
 
@@ -19,7 +21,7 @@ namespace animkit::cli {
 namespace {
 
 struct IkArgs {
-  std::string shape = "circle";
+  apps::DrawingArgs drawing;
   std::string solver = "ccd";
   int max_iterations = IkOptions{}.max_iterations;
   double tolerance = IkOptions{}.tolerance;
@@ -31,11 +33,16 @@ struct IkArgs {
   PictureArgs pictures;
 };
 
-std::string shape_names() {
-  std::string names;
-  for (LabShape s : all_lab_shapes())
-    names += (names.empty() ? "" : ", ") + std::string(to_string(s));
-  return names;
+// "text QD: 4 strokes, 1234 targets (56 with the pen up), spacing 0.0100 (cv 0.012), before
+// resampling 0.0132 (cv 0.61)"
+void print_drawing(const PreparedDrawing& d, int pen_up) {
+  std::printf("drawing: %s: %d stroke%s, %zu targets (%d with the pen up), spacing %.4g (cv %.3f)",
+              d.name.c_str(), d.strokes, d.strokes == 1 ? "" : "s", d.trajectory.targets.size(),
+              pen_up, d.spacing_after.mean, d.spacing_after.cv);
+  if (d.spacing_before.segments != d.spacing_after.segments) {
+    std::printf(", before resampling %.4g (cv %.3f)", d.spacing_before.mean, d.spacing_before.cv);
+  }
+  std::printf("\n");
 }
 
 void print_single_target(const Chain& chain, IkSolverKind solver, const DrawingRun& run) {
@@ -55,11 +62,6 @@ void print_single_target(const Chain& chain, IkSolverKind solver, const DrawingR
 }
 
 int run(const IkArgs& args) {
-  const auto shape = parse_lab_shape(args.shape);
-  if (!shape) {
-    return report_error("unknown shape '" + args.shape + "' (expected one of: " + shape_names() +
-                        ")");
-  }
   const auto solver = parse_ik_solver(args.solver);
   if (!solver) return report_error("unknown solver '" + args.solver + "' (expected ccd or fabrik)");
 
@@ -81,27 +83,41 @@ int run(const IkArgs& args) {
   const auto chain = build_chain(lab_arm());
   if (!chain) return report_error(chain.error().message);
   // One target is a one-frame drawing from the rest pose: same solve, same reports.
-  std::vector<Vec3> targets;
-  IkRunLabel label{args.shape, args.solver};
+  Trajectory trajectory;
+  IkRunLabel label{"target", args.solver, std::nullopt};
+  std::optional<PreparedDrawing> drawing;
   if (args.target.empty()) {
-    targets = lab_shape_targets(*shape);
+    const auto request = apps::drawing_request(args.drawing);
+    if (!request) return report_error(request.error().message);
+    auto prepared = prepare_drawing(request->first, request->second, *chain);
+    if (!prepared) return report_error(prepared.error().message);
+    drawing = std::move(*prepared);
+    trajectory = drawing->trajectory;
+    label.shape = drawing->name;
+    label.drawing = DrawingStats{
+        drawing->strokes,
+        static_cast<int>(std::count(trajectory.pen_down.begin(), trajectory.pen_down.end(), 0)),
+        drawing->spacing_before, drawing->spacing_after};
   } else {
+    const apps::DrawingArgs& d = args.drawing;
+    if (!d.text.empty() || !d.image.empty() || !d.mnist.empty() || !d.curve.empty()) {
+      return report_error("--target excludes --text, --image, --mnist and --curve");
+    }
     Vec3 target;
     if (!parse_vec3(args.target, target)) {
       return report_error("--target must be three finite numbers X,Y,Z, got '" + args.target + "'");
     }
-    targets.push_back(target);
-    label.shape = "target";
+    trajectory = Trajectory::all_pen_down({target});
   }
   // Opened before the run, so a missing OpenGL or ffmpeg stops it before any file is written.
   auto pictures = PictureOutput::open(args.pictures, !args.out.empty(), kIkVideoFps);
   if (!pictures) return report_error(pictures.error().message);
-  const auto run = run_drawing(*chain, targets, options);
+  const auto run = run_drawing(*chain, trajectory.targets, options, trajectory.pen_down);
   if (!run) return report_error(run.error().message);
   if (!args.out.empty()) {
     if (auto ok = ensure_output_directory(args.out); !ok) return report_error(ok.error().message);
   }
-  if (auto rendered = render_ik_pictures(targets, *run, *pictures, args.out); !rendered) {
+  if (auto rendered = render_ik_pictures(trajectory, *run, *pictures, args.out); !rendered) {
     return report_error(rendered.error().message);
   }
   if (!args.out.empty()) {
@@ -109,9 +125,15 @@ int run(const IkArgs& args) {
       return report_error(written.error().message);
     }
   }
-  if (args.target.empty()) {
+  if (drawing) {
+    const DrawingSummary summary = summarize(*run);
     print_ik_table_header();
-    print_ik_table_row(label.shape, label.solver, summarize(*run));
+    print_ik_table_row(label.shape, label.solver, summary);
+    print_drawing(*drawing, label.drawing->pen_up_targets);
+    if (summary.unreachable_targets > 0) {
+      std::printf("warning: %d targets are out of the arm's reach (see path.csv)\n",
+                  summary.unreachable_targets);
+    }
   } else {
     print_single_target(*chain, *solver, *run);
   }
@@ -131,8 +153,7 @@ std::function<int()> add_ik_command(CLI::App& app) {
       "ik",
       "The lab's arm draws a shape with inverse kinematics, one target per frame "
       "(warm-started from the previous frame), and reports what each solve did.");
-  CLI::Option* shape = ik->add_option("--shape", args->shape, "Shape to draw: " + shape_names())
-                           ->capture_default_str();
+  CLI::Option* shape = apps::add_drawing_options(*ik, args->drawing);
   ik->add_option("--solver", args->solver, "IK solver: ccd or fabrik")->capture_default_str();
   ik->add_option("--max-iterations", args->max_iterations, "Iteration cap per target (>= 1)")
       ->capture_default_str();

@@ -6,42 +6,48 @@ namespace animkit::cli {
 
 namespace {
 
-// Frame `frame`: its pose, the targets, the path its lap has drawn so far, the target marked
-// when it was out of reach.
-void describe_frame(DrawList& list, std::span<const Vec3> targets, const DrawingFrame& frame,
-                    std::span<const Vec3> path) {
+// Frame `frame`: its pose, the targets, the strokes its lap has drawn so far, the target
+// marked when it was out of reach.
+void describe_frame(DrawList& list, const Trajectory& trajectory, const DrawingFrame& frame,
+                    std::span<const std::vector<Vec3>> path) {
   std::optional<Vec3> unreachable;
   if (!frame.ik.reachable) unreachable = frame.target;
   list.clear();
-  describe_arm_drawing(list, frame.joint_positions, targets, path, unreachable);
+  describe_arm_drawing(
+      list, {frame.joint_positions, trajectory.targets, trajectory.pen_down, path, unreachable});
 }
 
 }  // namespace
 
-Result<void> render_ik_pictures(std::span<const Vec3> targets, const DrawingRun& run,
+Result<void> render_ik_pictures(const Trajectory& trajectory, const DrawingRun& run,
                                 PictureOutput& pictures, const std::filesystem::path& out) {
   if (run.frames.empty()) return {};
   // One camera for the whole run, so the video does not jump: it frames the targets and every
   // pose the arm took.
   Eigen::AlignedBox3d bounds;
-  for (const Vec3& t : targets) bounds.extend(t);
+  for (const Vec3& t : trajectory.targets) bounds.extend(t);
   for (const DrawingFrame& frame : run.frames) {
     for (const Vec3& p : frame.joint_positions) bounds.extend(p);
   }
   const OrbitCamera camera =
       OrbitCamera::framing(bounds, pictures.aspect(), kIkPictureYaw, kIkPicturePitch);
   DrawList list;
-  std::vector<Vec3> path;  // the current lap's end effectors, up to the frame drawn
+  std::vector<std::vector<Vec3>> path;  // the current lap's strokes, up to the frame drawn
   for (std::size_t f = 0; f < run.frames.size(); ++f) {
-    if (f > 0 && run.frames[f - 1].lap != run.frames[f].lap) path.clear();
-    path.push_back(run.frames[f].end_effector);
+    const DrawingFrame& frame = run.frames[f];
+    const bool same_lap = f > 0 && run.frames[f - 1].lap == frame.lap;
+    if (!same_lap) path.clear();
+    if (frame.pen_down) {
+      if (!same_lap || !run.frames[f - 1].pen_down) path.emplace_back();
+      path.back().push_back(frame.end_effector);
+    }
     if (pictures.wants_video()) {
-      describe_frame(list, targets, run.frames[f], path);
+      describe_frame(list, trajectory, frame, path);
       if (auto ok = pictures.add_video_frame(list, camera); !ok) return ok;
     }
   }
   if (auto ok = pictures.finish_video(); !ok) return ok;
-  describe_frame(list, targets, run.frames.back(), path);
+  describe_frame(list, trajectory, run.frames.back(), path);
   return pictures.write_png(out / "drawing.png", list, camera);
 }
 

@@ -3,6 +3,7 @@
 #include <span>
 
 #include "animkit/kinematics/drawing_session.h"
+#include "animkit/trajectory/trajectory.h"
 #include "picture_output.h"
 
 namespace animkit::cli {
@@ -11,8 +12,8 @@ namespace animkit::cli {
 constexpr double kIkVideoFps = 60.0;
 
 /// Renders the run's video frames (if asked for) and DIR/drawing.png: the arm in its final
-/// pose over the targets and the last lap's path, from a camera framing the whole run.
-Result<void> render_ik_pictures(std::span<const Vec3> targets, const DrawingRun& run,
+/// pose over the targets and the last lap's strokes, from a camera framing the whole run.
+Result<void> render_ik_pictures(const Trajectory& trajectory, const DrawingRun& run,
                                 PictureOutput& pictures, const std::filesystem::path& out);
 
 }  // namespace animkit::cli

@@ -2,35 +2,96 @@
 
 #include <imgui.h>
 
-#include "animkit/trajectory/lab_shapes.h"
-
 namespace animkit::viewer {
 
 namespace {
 constexpr double kGrabRadiusPx = 16.0;
-
-std::string shape_names() {
-  std::string names;
-  for (LabShape s : all_lab_shapes())
-    names += (names.empty() ? "" : ", ") + std::string(to_string(s));
-  return names;
-}
 }  // namespace
 
-IkView::IkView(IkScene scene, int shape) : scene_(std::move(scene)), shape_(shape) {}
+IkView::IkView(IkScene scene, std::vector<Entry> entries, int selected, DrawingLayout layout,
+               PreparedDrawing drawing)
+    : scene_(std::move(scene)),
+      entries_(std::move(entries)),
+      selected_(selected),
+      layout_(std::move(layout)),
+      drawing_(std::move(drawing)) {}
 
 Result<IkView> IkView::create(const IkViewOptions& options) {
-  const auto shape = parse_lab_shape(options.shape);
-  if (!shape) {
-    return fail("unknown shape '" + options.shape + "' (expected one of: " + shape_names() + ")");
+  std::vector<Entry> entries;
+  for (const std::string& name : builtin_shape_names()) {
+    DrawingSource source;
+    source.shape = name;
+    entries.push_back({name, source});
+  }
+  const auto chain = build_chain(lab_arm());
+  if (!chain) return fail(chain.error().message);
+  auto drawing = prepare_drawing(options.source, options.layout, *chain);
+  if (!drawing) return fail(drawing.error().message);
+  int selected = 0;
+  if (options.source.kind == DrawingSourceKind::shape) {
+    while (entries[selected].name != options.source.shape) ++selected;
+  } else {
+    selected = static_cast<int>(entries.size());
+    entries.push_back({drawing->name, options.source});
   }
   IkSceneOptions scene_options;
   scene_options.solver = options.solver;
-  auto scene = IkScene::create(lab_arm(), lab_shape_targets(*shape), scene_options);
+  auto scene = IkScene::create(lab_arm(), drawing->trajectory, scene_options);
   if (!scene) return fail(scene.error().message);
-  int index = 0;
-  while (all_lab_shapes()[index] != *shape) ++index;
-  return IkView(std::move(*scene), index);
+  return IkView(std::move(*scene), std::move(entries), selected, options.layout,
+                std::move(*drawing));
+}
+
+void IkView::select(int index) {
+  auto drawing = prepare_drawing(entries_[index].source, layout_, scene_.chain());
+  if (!drawing) {
+    message_ = drawing.error().message;
+    return;
+  }
+  if (auto set = scene_.set_trajectory(drawing->trajectory); !set) {
+    message_ = set.error().message;
+    return;
+  }
+  message_.clear();
+  selected_ = index;
+  drawing_ = std::move(*drawing);
+  pending_ = 0.0;
+}
+
+void IkView::drawing_panel() {
+  if (ImGui::BeginCombo("Shape", entries_[selected_].name.c_str())) {
+    for (int i = 0; i < static_cast<int>(entries_.size()); ++i) {
+      if (ImGui::Selectable(entries_[i].name.c_str(), i == selected_)) select(i);
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::InputText("##text", text_, sizeof text_);
+  ImGui::SameLine();
+  if (ImGui::Button("Draw text")) {
+    DrawingSource source;
+    source.kind = DrawingSourceKind::text;
+    source.text = text_;
+    const std::string name = "text " + source.text;
+    int index = 0;
+    while (index < static_cast<int>(entries_.size()) && entries_[index].name != name) ++index;
+    if (index == static_cast<int>(entries_.size())) entries_.push_back({name, source});
+    select(index);
+    if (!message_.empty() && index + 1 == static_cast<int>(entries_.size())) entries_.pop_back();
+  }
+  bool even = layout_.spacing.has_value();
+  float spacing = static_cast<float>(layout_.spacing.value_or(0.01));
+  bool changed = ImGui::Checkbox("Even spacing", &even);
+  ImGui::SameLine();
+  changed |= ImGui::SliderFloat("##spacing", &spacing, 0.002f, 0.05f, "%.3f",
+                                ImGuiSliderFlags_Logarithmic);
+  if (changed) {
+    layout_.spacing = even ? std::optional<double>(spacing) : std::nullopt;
+    select(selected_);
+  }
+  ImGui::Text("%d stroke%s, %zu targets, spacing cv %.3f", drawing_.strokes,
+              drawing_.strokes == 1 ? "" : "s", drawing_.trajectory.targets.size(),
+              drawing_.spacing_after.cv);
+  if (!message_.empty()) ImGui::TextColored(ImVec4(0.9f, 0.2f, 0.2f, 1.0f), "%s", message_.c_str());
 }
 
 void IkView::advance(double /*seconds*/) {
@@ -48,19 +109,7 @@ void IkView::panel() {
   if (ImGui::Combo("Solver", &solver, "CCD\0FABRIK\0")) {
     scene_.set_solver(solver == 0 ? IkSolverKind::ccd : IkSolverKind::fabrik);
   }
-  const auto shapes = all_lab_shapes();
-  const std::string current(to_string(shapes[shape_]));
-  if (ImGui::BeginCombo("Shape", current.c_str())) {
-    for (int i = 0; i < static_cast<int>(shapes.size()); ++i) {
-      const std::string label(to_string(shapes[i]));
-      if (ImGui::Selectable(label.c_str(), i == shape_)) {
-        shape_ = i;
-        (void)scene_.set_targets(lab_shape_targets(shapes[i]));  // built-in: always valid
-        pending_ = 0.0;
-      }
-    }
-    ImGui::EndCombo();
-  }
+  drawing_panel();
   if (ImGui::Button(playing_ ? "Pause" : "Start")) playing_ = !playing_;
   ImGui::SameLine();
   if (ImGui::Button("Step")) {
@@ -97,7 +146,7 @@ void IkView::panel() {
   ImGui::Separator();
   ImGui::TextWrapped(
       "Drag the arm's tip (white) to move the target: the arm follows on the plane y = 0. "
-      "Targets green, drawn path red, out-of-reach targets orange.");
+      "Targets green, pen-up travel grey, drawn path red, out-of-reach targets orange.");
 }
 
 bool IkView::press(const Cursor& cursor) {

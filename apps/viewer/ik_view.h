@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "animkit/io/drawing_source.h"
 #include "animkit/scene/ik_scene.h"
 #include "scene_view.h"
 
@@ -9,7 +10,8 @@ namespace animkit::viewer {
 
 struct IkViewOptions {
   IkSolverKind solver = IkSolverKind::ccd;
-  std::string shape = "star";
+  DrawingSource source;  ///< what is drawn first; a custom one joins the shape list
+  DrawingLayout layout;
 };
 
 /// "Inverse Kinematics": the lab's arm drawing a shape, plus a target to drag.
@@ -33,11 +35,24 @@ class IkView final : public SceneView {
   void set_playing(bool playing) { playing_ = playing; }
 
  private:
-  IkView(IkScene scene, int shape);
+  struct Entry {
+    std::string name;
+    DrawingSource source;
+  };
+  IkView(IkScene scene, std::vector<Entry> entries, int selected, DrawingLayout layout,
+         PreparedDrawing drawing);
   void follow_cursor(const Cursor& cursor);
+  // Prepares entry `index` with the current layout and hands it to the scene.
+  void select(int index);
+  void drawing_panel();
 
   IkScene scene_;
-  int shape_ = 0;  // index into all_lab_shapes()
+  std::vector<Entry> entries_;  // the built-in shapes, then custom drawings
+  int selected_ = 0;
+  DrawingLayout layout_;
+  PreparedDrawing drawing_;  // what the scene is drawing, with its spacing numbers
+  std::string message_;      // the last error (a font without a glyph, ...)
+  char text_[128] = "QD";
   bool playing_ = true;
   double speed_ = 1.0;    // targets per displayed frame
   double pending_ = 0.0;  // fractional targets carried to the next frame

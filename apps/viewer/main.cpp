@@ -4,6 +4,7 @@
 #include <exception>
 #include <string>
 
+#include "drawing_args.h"
 #include "hosts.h"
 
 namespace animkit::viewer {
@@ -25,10 +26,9 @@ int run(int argc, char** argv) {
   int frames = 0;
   std::string capture;
   app.add_option("--scene", scene, "Scene to open: ik or cloth")->capture_default_str();
-  app.add_option("--shape", options.ik.shape,
-                 "IK: shape to draw (circle, square, heart, "
-                 "triangle, star)")
-      ->capture_default_str();
+  apps::DrawingArgs drawing;
+  drawing.shape = "star";
+  apps::add_drawing_options(app, drawing);
   app.add_option("--solver", solver, "IK: ccd or fabrik")->capture_default_str();
   GridClothOptions& grid = options.cloth.grid;
   app.add_option("--grid", grid.cells, "Cloth: cells per side")->capture_default_str();
@@ -69,6 +69,10 @@ int run(int argc, char** argv) {
   if (!ik_solver)
     return report_error("unknown solver '" + solver + "' (expected ccd or fabrik)", 2);
   options.ik.solver = *ik_solver;
+  const auto request = apps::drawing_request(drawing);
+  if (!request) return report_error(request.error().message, 2);
+  options.ik.source = request->first;
+  options.ik.layout = request->second;
   const auto kind = parse_integrator(integrator);
   if (!kind) {
     return report_error("unknown integrator '" + integrator +

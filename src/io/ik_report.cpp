@@ -12,7 +12,7 @@ namespace animkit {
 
 std::string ik_metrics_json(const IkRunLabel& label, const DrawingOptions& options,
                             const DrawingSummary& s) {
-  const nlohmann::ordered_json j = {
+  nlohmann::ordered_json j = {
       {"solver", label.solver},
       {"shape", label.shape},
       {"targets", s.targets},
@@ -30,19 +30,30 @@ std::string ik_metrics_json(const IkRunLabel& label, const DrawingOptions& optio
         {"laps", options.laps},
         {"warm_start", options.warm_start}}},
   };
+  if (label.drawing) {
+    const auto spacing = [](const SpacingStats& st) {
+      return nlohmann::ordered_json{
+          {"mean", st.mean}, {"cv", st.cv}, {"min", st.min}, {"max", st.max}};
+    };
+    j["drawing"] = {{"strokes", label.drawing->strokes},
+                    {"pen_up_targets", label.drawing->pen_up_targets},
+                    {"spacing_before", spacing(label.drawing->spacing_before)},
+                    {"spacing_after", spacing(label.drawing->spacing_after)}};
+  }
   return j.dump(2) + "\n";
 }
 
 std::string ik_path_csv(const DrawingRun& run) {
   std::string out =
-      "frame,target_x,target_y,target_z,end_x,end_y,end_z,iterations,error,converged,reachable\n";
+      "frame,target_x,target_y,target_z,end_x,end_y,end_z,iterations,error,converged,reachable,"
+      "pen_down\n";
   char line[512];
   for (std::size_t i = 0; i < run.frames.size(); ++i) {
     const DrawingFrame& f = run.frames[i];
-    std::snprintf(line, sizeof line, "%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%.17g,%d,%d\n", i,
-                  f.target.x(), f.target.y(), f.target.z(), f.end_effector.x(), f.end_effector.y(),
-                  f.end_effector.z(), f.ik.iterations, f.ik.error, f.ik.converged ? 1 : 0,
-                  f.ik.reachable ? 1 : 0);
+    std::snprintf(line, sizeof line, "%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%.17g,%d,%d,%d\n",
+                  i, f.target.x(), f.target.y(), f.target.z(), f.end_effector.x(),
+                  f.end_effector.y(), f.end_effector.z(), f.ik.iterations, f.ik.error,
+                  f.ik.converged ? 1 : 0, f.ik.reachable ? 1 : 0, f.pen_down ? 1 : 0);
     out += line;
   }
   return out;
@@ -101,22 +112,20 @@ std::string ik_drawing_svg(const IkRunLabel& label, const DrawingRun& run) {
       << "targets green, drawn path red</tspan>"
       << "<tspan x=\"" << margin << "\" y=\"62\">" << numbers << "</tspan></text>\n";
 
-  svg << "<g fill=\"#00cc00\">\n";
-  for (std::size_t i = 0; i < run.frames.size(); ++i) {
-    if (run.frames[i].lap != run.frames.back().lap) continue;  // one lap of targets suffices
-    const Vec3& t = run.frames[i].target;
-    svg << "<circle cx=\"" << view.px(t) << "\" cy=\"" << view.py(t) << "\" r=\"2.5\"/>\n";
-  }
-  svg << "</g>\n";
-
-  // One red polyline per lap: the arm is reset to rest between laps.
-  for (std::size_t i = 0; i < run.frames.size();) {
-    svg << "<polyline fill=\"none\" stroke=\"#e00000\" stroke-width=\"1.5\" points=\"";
-    const int lap = run.frames[i].lap;
-    for (; i < run.frames.size() && run.frames[i].lap == lap; ++i) {
-      const Vec3& e = run.frames[i].end_effector;
-      svg << view.px(e) << ',' << view.py(e) << ' ';
+  // One lap of targets suffices: green where the pen draws, grey where it travels.
+  for (const bool down : {true, false}) {
+    svg << "<g fill=\"" << (down ? "#00cc00" : "#bbbbbb") << "\">\n";
+    for (const DrawingFrame& f : run.frames) {
+      if (f.lap != run.frames.back().lap || f.pen_down != down) continue;
+      svg << "<circle cx=\"" << view.px(f.target) << "\" cy=\"" << view.py(f.target) << "\" r=\""
+          << (down ? 2.5 : 1.5) << "\"/>\n";
     }
+    svg << "</g>\n";
+  }
+  // One red polyline per stroke: pen-up travel and the reset between laps are not drawn.
+  for (const auto& stroke : drawn_strokes(run.frames)) {
+    svg << "<polyline fill=\"none\" stroke=\"#e00000\" stroke-width=\"1.5\" points=\"";
+    for (const Vec3& e : stroke) svg << view.px(e) << ',' << view.py(e) << ' ';
     svg << "\"/>\n";
   }
   svg << "</svg>\n";

@@ -39,9 +39,13 @@ std::optional<Error> DrawingOptions::validate() const {
 }
 
 Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets,
-                               const DrawingOptions& options) {
+                               const DrawingOptions& options, std::span<const char> pen_down) {
   if (auto error = options.validate()) return fail(error->message);
   if (targets.empty()) return fail("the trajectory has no targets");
+  if (!pen_down.empty() && pen_down.size() != targets.size()) {
+    return fail("the pen list has " + std::to_string(pen_down.size()) + " flags for " +
+                std::to_string(targets.size()) + " targets");
+  }
   const long long frames = static_cast<long long>(targets.size()) * options.laps;
   if (frames > kMaxDrawingFrames) {
     return fail(std::to_string(options.laps) + " laps of " + std::to_string(targets.size()) +
@@ -72,6 +76,7 @@ Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets
       DrawingFrame frame;
       frame.lap = lap;
       frame.target = targets[t];
+      frame.pen_down = pen_down.empty() || pen_down[t] != 0;
       frame.end_effector = pose.end_effector();
       frame.ik = *solved;
       frame.joint_step_rad = t == 0 ? 0.0 : largest_rotation_change(previous, pose);
@@ -83,6 +88,17 @@ Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets
   }
   run.final_pose = pose;
   return run;
+}
+
+std::vector<std::vector<Vec3>> drawn_strokes(std::span<const DrawingFrame> frames) {
+  std::vector<std::vector<Vec3>> strokes;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    if (!frames[i].pen_down) continue;
+    const bool continues = i > 0 && frames[i - 1].pen_down && frames[i - 1].lap == frames[i].lap;
+    if (!continues) strokes.emplace_back();
+    strokes.back().push_back(frames[i].end_effector);
+  }
+  return strokes;
 }
 
 DrawingSummary summarize(const DrawingRun& run) {

@@ -9,8 +9,13 @@
 namespace animkit {
 
 namespace {
-std::optional<Error> check_targets(const std::vector<Vec3>& targets) {
+std::optional<Error> check_trajectory(const Trajectory& trajectory) {
+  const auto& targets = trajectory.targets;
   if (targets.empty()) return Error{"the target list is empty"};
+  if (!trajectory.pen_down.empty() && trajectory.pen_down.size() != targets.size()) {
+    return Error{"the pen list has " + std::to_string(trajectory.pen_down.size()) + " flags for " +
+                 std::to_string(targets.size()) + " targets"};
+  }
   for (std::size_t i = 0; i < targets.size(); ++i) {
     if (!is_finite(targets[i])) {
       return Error{"target " + std::to_string(i) + " has a non-finite coordinate " +
@@ -21,25 +26,26 @@ std::optional<Error> check_targets(const std::vector<Vec3>& targets) {
 }
 }  // namespace
 
-IkScene::IkScene(Chain chain, std::vector<Vec3> targets, const IkSceneOptions& options)
+IkScene::IkScene(Chain chain, Trajectory trajectory, const IkSceneOptions& options)
     : chain_(std::move(chain)),
       pose_(rest_pose(chain_)),
-      targets_(std::move(targets)),
+      trajectory_(std::move(trajectory)),
       options_(options) {}
 
-Result<IkScene> IkScene::create(const ChainDesc& desc, std::vector<Vec3> targets,
+Result<IkScene> IkScene::create(const ChainDesc& desc, Trajectory trajectory,
                                 const IkSceneOptions& options) {
   if (auto error = options.ik.validate()) return fail(error->message);
-  if (auto error = check_targets(targets)) return fail(error->message);
+  if (auto error = check_trajectory(trajectory)) return fail(error->message);
   auto chain = build_chain(desc);
   if (!chain) return fail(chain.error().message);
-  return IkScene(std::move(*chain), std::move(targets), options);
+  return IkScene(std::move(*chain), std::move(trajectory), options);
 }
 
 void IkScene::reset() {
   pose_ = rest_pose(chain_);
   path_.clear();
   next_ = 0;
+  solved_in_lap_ = 0;
   last_.reset();
 }
 
@@ -60,10 +66,18 @@ const IkSolveReadout& IkScene::advance() {
   if (lap_finished()) {
     pose_ = rest_pose(chain_);
     path_.clear();
+    solved_in_lap_ = 0;
   }
-  solve(targets_[next_]);
-  path_.push_back(pose_.end_effector());
-  next_ = (next_ + 1) % static_cast<int>(targets_.size());
+  const auto& pen = trajectory_.pen_down;
+  const bool down = pen.empty() || pen[next_] != 0;
+  const bool was_down = next_ > 0 && (pen.empty() || pen[next_ - 1] != 0);
+  solve(trajectory_.targets[next_]);
+  if (down) {
+    if (!was_down || path_.empty()) path_.emplace_back();
+    path_.back().push_back(pose_.end_effector());
+  }
+  ++solved_in_lap_;
+  next_ = (next_ + 1) % static_cast<int>(trajectory_.targets.size());
   return *last_;
 }
 
@@ -72,21 +86,25 @@ Result<IkSolveReadout> IkScene::follow(const Vec3& target) {
   return solve(target);
 }
 
-Result<void> IkScene::set_targets(std::vector<Vec3> targets) {
-  if (auto error = check_targets(targets)) return fail(error->message);
-  targets_ = std::move(targets);
+Result<void> IkScene::set_trajectory(Trajectory trajectory) {
+  if (auto error = check_trajectory(trajectory)) return fail(error->message);
+  trajectory_ = std::move(trajectory);
   reset();
   return {};
 }
 
-void describe_arm_drawing(DrawList& out, std::span<const Vec3> joints,
-                          std::span<const Vec3> targets, std::span<const Vec3> path,
-                          const std::optional<Vec3>& unreachable_target) {
+void describe_arm_drawing(DrawList& out, const ArmDrawingView& view) {
   // The grid sits just below the drawing plane y = 0 so the path never fights it for depth.
   out.add_ground_grid(-0.002, 12, 0.25, 0.5);
-  for (const Vec3& t : targets) out.add_point(t, palette::target, 5.0f);
-  for (std::size_t i = 1; i < path.size(); ++i)
-    out.add_line(path[i - 1], path[i], palette::path, 3.0f);
+  for (std::size_t i = 0; i < view.targets.size(); ++i) {
+    if (view.pen_down.empty() || view.pen_down[i] != 0) {
+      out.add_point(view.targets[i], palette::target, 5.0f);
+    } else {
+      out.add_point(view.targets[i], palette::pen_up, 3.0f);
+    }
+  }
+  for (const auto& stroke : view.path) out.add_polyline(stroke, palette::path, 3.0f);
+  const auto& joints = view.joints;
   if (joints.empty()) return;
   double reach = 0.0;
   for (std::size_t i = 1; i < joints.size(); ++i) reach += (joints[i] - joints[i - 1]).norm();
@@ -99,21 +117,22 @@ void describe_arm_drawing(DrawList& out, std::span<const Vec3> joints,
   }
   out.add_sphere(joints.back(), 0.6 * thickness, palette::end_effector);
   out.add_point(joints.back(), palette::end_effector, 9.0f);  // the pen, and the drag handle
-  if (unreachable_target) {
-    out.add_line(joints.back(), *unreachable_target, palette::unreachable, 2.0f);
-    out.add_point(*unreachable_target, palette::unreachable, 14.0f);
+  if (view.unreachable_target) {
+    out.add_line(joints.back(), *view.unreachable_target, palette::unreachable, 2.0f);
+    out.add_point(*view.unreachable_target, palette::unreachable, 14.0f);
   }
 }
 
 void IkScene::describe(DrawList& out) const {
   std::optional<Vec3> unreachable;
   if (last_ && !last_->result.reachable) unreachable = last_->target;
-  describe_arm_drawing(out, pose_.global_positions, targets_, path_, unreachable);
+  describe_arm_drawing(
+      out, {pose_.global_positions, trajectory_.targets, trajectory_.pen_down, path_, unreachable});
 }
 
 Eigen::AlignedBox3d IkScene::focus_bounds() const {
   Eigen::AlignedBox3d box;
-  for (const Vec3& t : targets_) box.extend(t);
+  for (const Vec3& t : trajectory_.targets) box.extend(t);
   for (const Vec3& p : pose_.global_positions) box.extend(p);
   box.extend(chain_.root_position());
   return box;

@@ -131,8 +131,8 @@ bool zhang_suen_deletes(const std::array<int, 8>& p, int pass) {
 bool guo_hall_deletes(const std::array<int, 8>& p, int pass) {
   const int p2 = p[0], p3 = p[1], p4 = p[2], p5 = p[3], p6 = p[4], p7 = p[5], p8 = p[6], p9 = p[7];
   const auto no = [](int v) { return 1 - v; };
-  const int c = (no(p2) & (p3 | p4)) + (no(p4) & (p5 | p6)) + (no(p6) & (p7 | p8)) +
-                (no(p8) & (p9 | p2));
+  const int c =
+      (no(p2) & (p3 | p4)) + (no(p4) & (p5 | p6)) + (no(p6) & (p7 | p8)) + (no(p8) & (p9 | p2));
   const int n1 = (p9 | p2) + (p3 | p4) + (p5 | p6) + (p7 | p8);
   const int n2 = (p2 | p3) + (p4 | p5) + (p6 | p7) + (p8 | p9);
   const int n = std::min(n1, n2);

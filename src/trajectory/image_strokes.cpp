@@ -60,8 +60,9 @@ Result<ImageStrokes> image_to_strokes(const GrayImage& image, const ImageStrokeO
   out.spurs_removed = prune_spurs(graph, 1.5 * pen_width);
   Strokes strokes = cover_with_strokes(graph);
   for (Stroke& s : strokes) {
-    // Smooth in pixels, corners held (a "7" keeps its corner), then flip y to point up.
-    s = smooth(s, options.smoothing_radius, find_corners(s, 1.0));
+    // Smooth in pixels, corners held (a "7" keeps its corner; judged over 3 pixels, so the
+    // staircase of a slanted line is no corner), then flip y to point up.
+    s = smooth(s, options.smoothing_radius, find_corners(s, 1.0, 3.0));
     for (Point2& p : s) p = Point2(p.x(), -p.y());
   }
   out.strokes = order_for_short_travel(std::move(strokes));

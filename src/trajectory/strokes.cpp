@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "animkit/core/validation.h"
 
@@ -95,17 +96,54 @@ std::optional<Error> ResampleOptions::validate() const {
   return std::nullopt;
 }
 
-std::vector<std::size_t> find_corners(const Stroke& stroke, double corner_angle) {
+std::vector<std::size_t> find_corners(const Stroke& stroke, double corner_angle, double scale) {
   std::vector<std::size_t> corners;
   const std::size_t n = stroke.size();
   if (n < 3) return corners;
-  if (is_closed(stroke) && std::abs(turn(stroke[n - 2], stroke[0], stroke[1])) > corner_angle) {
-    corners.push_back(0);
-  }
-  for (std::size_t i = 1; i + 1 < n; ++i) {
-    if (std::abs(turn(stroke[i - 1], stroke[i], stroke[i + 1])) > corner_angle) {
-      corners.push_back(i);
+  const bool closed = is_closed(stroke);
+  // Closed strokes are walked round their n - 1 distinct points.
+  const std::size_t ring = closed ? n - 1 : n;
+  const auto step = [&](std::size_t i, int direction) -> std::optional<std::size_t> {
+    if (closed) return (i + ring + static_cast<std::size_t>(direction + ring)) % ring;
+    if (direction < 0) return i == 0 ? std::nullopt : std::optional(i - 1);
+    return i + 1 >= n ? std::nullopt : std::optional(i + 1);
+  };
+  // The point at least `scale` of arc away (or the last one there is), walking one way.
+  const auto reach = [&](std::size_t i, int direction) -> std::optional<std::size_t> {
+    std::size_t j = i;
+    double walked = 0.0;
+    for (std::size_t k = 0; k + 1 < ring; ++k) {
+      const auto next = step(j, direction);
+      if (!next) break;
+      walked += (stroke[*next] - stroke[j]).norm();
+      j = *next;
+      if (walked >= scale) break;
     }
+    return j == i ? std::nullopt : std::optional(j);
+  };
+  std::vector<double> angle(ring, 0.0);
+  for (std::size_t i = closed ? 0 : 1; i + (closed ? 0 : 1) < ring; ++i) {
+    const auto back = reach(i, -1), ahead = reach(i, +1);
+    if (back && ahead) angle[i] = std::abs(turn(stroke[*back], stroke[i], stroke[*ahead]));
+  }
+  // One corner per bend: the sharpest point among neighbours within `scale` that all turn.
+  for (std::size_t i = 0; i < ring; ++i) {
+    if (angle[i] <= corner_angle) continue;
+    bool sharpest = true;
+    for (int direction : {-1, +1}) {
+      std::size_t j = i;
+      double walked = 0.0;
+      for (std::size_t k = 0; k + 1 < ring && sharpest; ++k) {
+        const auto next = step(j, direction);
+        if (!next) break;
+        walked += (stroke[*next] - stroke[j]).norm();
+        j = *next;
+        if (walked > scale) break;
+        // Ties go to the earlier point so a symmetric bend keeps exactly one corner.
+        if (angle[j] > angle[i] || (angle[j] == angle[i] && j < i)) sharpest = false;
+      }
+    }
+    if (sharpest) corners.push_back(i);
   }
   return corners;
 }
@@ -113,7 +151,7 @@ std::vector<std::size_t> find_corners(const Stroke& stroke, double corner_angle)
 Stroke resample(const Stroke& stroke, const ResampleOptions& options) {
   const Stroke s = distinct_points(stroke);
   if (s.size() < 2) return s;
-  std::vector<std::size_t> keep = find_corners(s, options.corner_angle);
+  std::vector<std::size_t> keep = find_corners(s, options.corner_angle, options.spacing);
   if (keep.empty() || keep.front() != 0) keep.insert(keep.begin(), 0);
   keep.push_back(s.size() - 1);
   Stroke out{s.front()};

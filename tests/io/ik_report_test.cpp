@@ -19,7 +19,7 @@ class IkReport : public testing::Test {
   std::vector<Vec3> targets = lab_shape_targets(LabShape::square);
   DrawingOptions options;
   DrawingRun run = *run_drawing(chain, targets, options);
-  IkRunLabel label{"square", "ccd"};
+  IkRunLabel label{"square", "ccd", std::nullopt};
 };
 
 TEST_F(IkReport, MetricsJsonHasTheContractNames) {

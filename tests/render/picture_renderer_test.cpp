@@ -34,7 +34,8 @@ TEST(PictureRenderer, EmptySceneIsBackgroundEverywhere) {
 }
 
 TEST(PictureRenderer, IkSceneMidDrawingShowsTargetsPathAndArm) {
-  auto scene = IkScene::create(lab_arm(), lab_shape_targets(LabShape::star));
+  auto scene =
+      IkScene::create(lab_arm(), Trajectory::all_pen_down(lab_shape_targets(LabShape::star)));
   ASSERT_TRUE(scene.has_value()) << scene.error().message;
   for (int i = 0; i < 200; ++i) scene->advance();
   DrawList list;
@@ -55,8 +56,9 @@ TEST(PictureRenderer, IkSceneMidDrawingShowsTargetsPathAndArm) {
   }
   EXPECT_GE(green, undrawn * 8 / 10) << green << " of " << undrawn << " targets green";
   int red = 0, drawn = 0;
-  for (std::size_t i = 0; i < scene->path().size(); i += 5, ++drawn) {
-    const Pixel* p = pixel_at(image, camera, scene->path()[i]);
+  const std::vector<Vec3>& path = scene->path().front();
+  for (std::size_t i = 0; i < path.size(); i += 5, ++drawn) {
+    const Pixel* p = pixel_at(image, camera, path[i]);
     ASSERT_NE(p, nullptr);
     red += is_red(*p);
   }
@@ -75,7 +77,7 @@ TEST(PictureRenderer, IkSceneMidDrawingShowsTargetsPathAndArm) {
 }
 
 TEST(PictureRenderer, UnreachableTargetIsMarked) {
-  auto scene = IkScene::create(lab_arm(), {Vec3(0.3, 0.0, 0.2)});
+  auto scene = IkScene::create(lab_arm(), Trajectory::all_pen_down({Vec3(0.3, 0.0, 0.2)}));
   ASSERT_TRUE(scene.has_value());
   ASSERT_TRUE(scene->follow(Vec3(3.5, 0.0, 0.0)).has_value());
   ASSERT_FALSE(scene->last_solve()->result.reachable);

@@ -6,26 +6,39 @@
 #include <string_view>
 
 #include "animkit/kinematics/drawing_session.h"
+#include "animkit/trajectory/strokes.h"
 
 namespace animkit {
 
+/// How a drawing was sampled, for the reports (see PreparedDrawing).
+struct DrawingStats {
+  int strokes = 0;
+  int pen_up_targets = 0;
+  SpacingStats spacing_before, spacing_after;
+};
+
 /// What the run was: names printed into the reports.
 struct IkRunLabel {
-  std::string shape;   ///< e.g. "star"
-  std::string solver;  ///< e.g. "ccd"
+  std::string shape;                    ///< e.g. "star", "text QD"
+  std::string solver;                   ///< e.g. "ccd"
+  std::optional<DrawingStats> drawing;  ///< strokes and spacing, when known
 };
 
 /// metrics.json: {"solver", "shape", "targets", "converged_fraction", "unreachable_targets",
 /// "iterations": {"mean","median","max"}, "error": {"mean","max"}, "max_joint_step_rad",
-/// "solve_time_us": {"median","mean"}, plus the options used.
+/// "solve_time_us": {"median","mean"}, plus the options used and, when the label has them,
+/// "drawing": {"strokes", "pen_up_targets", "spacing_before"/"spacing_after": {"mean", "cv",
+/// "min", "max"}}.
 std::string ik_metrics_json(const IkRunLabel& label, const DrawingOptions& options,
                             const DrawingSummary& summary);
 
-/// path.csv: frame, target x,y,z, end effector x,y,z, iterations, error, converged, reachable.
+/// path.csv: frame, target x,y,z, end effector x,y,z, iterations, error, converged, reachable,
+/// pen_down.
 std::string ik_path_csv(const DrawingRun& run);
 
-/// drawing.svg: the plane y = 0 seen from above (x to the right, z down), targets in green,
-/// the drawn end-effector path in red, titled with shape and solver.
+/// drawing.svg: the plane y = 0 seen from above (x to the right, z down), targets in green
+/// (pen-up travel targets grey), the drawn end-effector path in red (pen-down strokes only),
+/// titled with shape and solver.
 std::string ik_drawing_svg(const IkRunLabel& label, const DrawingRun& run);
 
 /// Writes the three files into `dir` (created if needed), each atomically.

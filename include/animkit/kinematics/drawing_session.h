@@ -23,6 +23,7 @@ struct DrawingOptions {
 struct DrawingFrame {
   int lap = 0;
   Vec3 target = Vec3::Zero();
+  bool pen_down = true;              ///< false while travelling between strokes
   Vec3 end_effector = Vec3::Zero();  ///< after the solve (world)
   IkResult ik;
   /// Largest change of any joint's local rotation since the previous frame of the same lap
@@ -41,9 +42,15 @@ struct DrawingRun {
 constexpr long long kMaxDrawingFrames = 10'000'000;
 
 /// Runs the session. Errors: empty target list, a NaN/inf target (naming its index), bad
-/// options, more than kMaxDrawingFrames frames.
+/// options, more than kMaxDrawingFrames frames, a pen list whose size is not the targets'.
+/// `pen_down` (one flag per target, or empty for all down) is recorded in the frames.
 Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets,
-                               const DrawingOptions& options = {});
+                               const DrawingOptions& options = {},
+                               std::span<const char> pen_down = {});
+
+/// The drawn path of a run: the end effector's positions while the pen is down, one polyline
+/// per stroke (a new one at each pen-up and at each lap, where the arm is reset).
+std::vector<std::vector<Vec3>> drawn_strokes(std::span<const DrawingFrame> frames);
 
 /// Aggregate numbers of a run (the metrics the CLI writes and the README quotes).
 struct DrawingSummary {

@@ -22,9 +22,9 @@ struct ClothSceneOptions {
 
 /// What describe() draws. The lab shows the springs; the surface is what users expect.
 struct ClothStyle {
-  bool surface = true;     ///< lit, two-sided, smooth-shaded triangles
-  bool springs = false;    ///< every spring as a line
-  bool particles = false;  ///< every particle as a point (pinned ones are always marked)
+  bool surface = true;        ///< lit, two-sided, smooth-shaded triangles
+  bool springs = false;       ///< every spring as a line
+  bool particles = false;     ///< every particle as a point (pinned ones are always marked)
   double floor_height = 0.0;  ///< y of the ground grid (below where the cloth can hang)
 };
 

@@ -20,6 +20,7 @@ struct Rgba {
 namespace palette {
 inline constexpr Rgba target{0.10f, 0.75f, 0.20f, 1.0f};
 inline constexpr Rgba path{0.90f, 0.10f, 0.10f, 1.0f};
+inline constexpr Rgba pen_up{0.55f, 0.57f, 0.60f, 1.0f};  ///< travel targets between strokes
 inline constexpr Rgba unreachable{1.00f, 0.55f, 0.00f, 1.0f};
 inline constexpr Rgba bone{0.35f, 0.50f, 0.85f, 1.0f};
 inline constexpr Rgba joint{0.95f, 0.80f, 0.20f, 1.0f};

@@ -8,6 +8,7 @@
 
 #include "animkit/kinematics/ik_solver.h"
 #include "animkit/scene/draw_list.h"
+#include "animkit/trajectory/trajectory.h"
 
 namespace animkit {
 
@@ -23,12 +24,19 @@ struct IkSolveReadout {
   double solve_time_us = 0.0;
 };
 
-/// Describes an arm drawing: ground grid, targets (green), the drawn path (red), the arm through
-/// `joints` (bones as boxes, joints as spheres) and, when given, an unreachable target
-/// (orange, joined to the end effector). Shared by IkScene and the CLI's pictures.
-void describe_arm_drawing(DrawList& out, std::span<const Vec3> joints,
-                          std::span<const Vec3> targets, std::span<const Vec3> path,
-                          const std::optional<Vec3>& unreachable_target = std::nullopt);
+/// One moment of an arm drawing, as describe_arm_drawing() shows it.
+struct ArmDrawingView {
+  std::span<const Vec3> joints;             ///< the arm's joint positions (world)
+  std::span<const Vec3> targets;            ///< every target of the drawing
+  std::span<const char> pen_down;           ///< per target (empty: all down)
+  std::span<const std::vector<Vec3>> path;  ///< the strokes drawn so far
+  std::optional<Vec3> unreachable_target;   ///< the current target, when out of reach
+};
+
+/// Describes an arm drawing: ground grid, targets (green; pen-up travel grey), the drawn
+/// strokes (red), the arm (bones as boxes, joints as spheres, the pen as a white dot) and an
+/// unreachable target (orange, joined to the pen). Shared by IkScene and the CLI's pictures.
+void describe_arm_drawing(DrawList& out, const ArmDrawingView& view);
 
 /// The direction pictures of the arm are taken from: high enough to see the drawing plane.
 inline constexpr double kIkPictureYaw = 0.5, kIkPicturePitch = 0.9;
@@ -36,31 +44,33 @@ inline constexpr double kIkPictureYaw = 0.5, kIkPicturePitch = 0.9;
 class IkScene {
  public:
   /// Errors: an invalid chain, an empty target list or a non-finite target (naming its index),
-  /// invalid solver options.
-  static Result<IkScene> create(const ChainDesc& chain, std::vector<Vec3> targets,
+  /// a pen list of the wrong size, invalid solver options.
+  static Result<IkScene> create(const ChainDesc& chain, Trajectory trajectory,
                                 const IkSceneOptions& options = {});
 
   /// Back to the rest pose, the first target and an empty path.
   void reset();
-  /// Solves for the next target and extends the drawn path. After the last target the next
-  /// call starts a new lap: rest pose, empty path (the lab's behaviour).
+  /// Solves for the next target and, with the pen down, extends the drawn path. After the last
+  /// target the next call starts a new lap: rest pose, empty path (the lab's behaviour).
   const IkSolveReadout& advance();
   /// Solves for any target (a dragged one) from the current pose; the drawn path is untouched.
   /// Errors: a non-finite target.
   Result<IkSolveReadout> follow(const Vec3& target);
-  /// Replaces the targets and resets. Errors as in create().
-  Result<void> set_targets(std::vector<Vec3> targets);
+  /// Replaces the trajectory and resets. Errors as in create().
+  Result<void> set_trajectory(Trajectory trajectory);
   void set_solver(IkSolverKind solver) { options_.solver = solver; }
 
   const Chain& chain() const { return chain_; }
   const Pose& pose() const { return pose_; }
-  const std::vector<Vec3>& targets() const { return targets_; }
-  const std::vector<Vec3>& path() const { return path_; }
+  const std::vector<Vec3>& targets() const { return trajectory_.targets; }
+  const Trajectory& trajectory() const { return trajectory_; }
+  /// The strokes drawn in this lap, one polyline per pen-down stretch.
+  const std::vector<std::vector<Vec3>>& path() const { return path_; }
   const IkSceneOptions& options() const { return options_; }
   /// Index of the target the next advance() solves for.
   int next_target() const { return next_; }
   /// True once every target of the current lap has been solved.
-  bool lap_finished() const { return next_ == 0 && !path_.empty(); }
+  bool lap_finished() const { return next_ == 0 && solved_in_lap_ > 0; }
   const std::optional<IkSolveReadout>& last_solve() const { return last_; }
 
   /// Describes the scene: ground grid, targets (green), drawn path (red), the arm (bones as
@@ -71,15 +81,16 @@ class IkScene {
   Eigen::AlignedBox3d focus_bounds() const;
 
  private:
-  IkScene(Chain chain, std::vector<Vec3> targets, const IkSceneOptions& options);
+  IkScene(Chain chain, Trajectory trajectory, const IkSceneOptions& options);
   IkSolveReadout solve(const Vec3& target);
 
   Chain chain_;
   Pose pose_;
-  std::vector<Vec3> targets_;
-  std::vector<Vec3> path_;
+  Trajectory trajectory_;
+  std::vector<std::vector<Vec3>> path_;
   IkSceneOptions options_;
   int next_ = 0;
+  int solved_in_lap_ = 0;
   std::optional<IkSolveReadout> last_;
 };
 

@@ -32,7 +32,7 @@ struct ImageStrokes {
   int threshold = 0;  ///< the gray level used
   int specks_removed = 0;
   int spurs_removed = 0;  ///< short skeleton branches dropped (see prune_spurs)
-  BinaryImage skeleton;  ///< the thinned ink, for inspection and tests
+  BinaryImage skeleton;   ///< the thinned ink, for inspection and tests
 };
 
 /// Errors: an empty image or one larger than kMaxImageSide, an image of a single gray level

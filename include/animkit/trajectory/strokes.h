@@ -37,16 +37,19 @@ struct ResampleOptions {
   std::optional<Error> validate() const;
 };
 
-/// Resamples a stroke by arc length: corners and both ends are kept, and each piece between
-/// them is cut into equal parts no longer than `spacing` (so spacing varies only where a
+/// Resamples a stroke by arc length: corners (found at the scale of `spacing`) and both ends
+/// are kept, and each piece between them is cut into equal parts no longer than `spacing` (so spacing varies only where a
 /// piece is shorter than a whole number of spacings). Duplicate points are dropped first; a
 /// stroke of fewer than 2 distinct points comes back as its first point.
 Stroke resample(const Stroke& stroke, const ResampleOptions& options);
 Strokes resample(const Strokes& strokes, const ResampleOptions& options);
 
-/// Indices of the corners of a stroke (see ResampleOptions::corner_angle), first and last
-/// points excluded. A closed stroke's start counts as a corner when it turns there.
-std::vector<std::size_t> find_corners(const Stroke& stroke, double corner_angle);
+/// Indices of the corners of a stroke, first and last points excluded (a closed stroke's start
+/// counts when it turns there): points where the direction from `scale` of arc behind to
+/// `scale` ahead turns by more than `corner_angle` radians, the sharpest of each bend. The
+/// scale makes a pixel staircase smooth and a real corner sharp; 0 compares neighbours.
+std::vector<std::size_t> find_corners(const Stroke& stroke, double corner_angle,
+                                      double scale = 0.0);
 
 /// Moving-average smoothing over `radius` neighbours on each side, ends (and the corners
 /// given) held fixed; for the staircase of pixel skeletons. radius 0 returns the stroke.

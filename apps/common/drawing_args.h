@@ -1,0 +1,31 @@
+#pragma once
+// The options that choose what the arm draws, shared by `animkit ik` and `animkit-viewer` so
+// both accept the same sources: --shape, --text (--font, --centerline), --image, --mnist
+// (--index), --curve, and how they are laid out (--spacing, --box, --threshold, --thinning).
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "animkit/io/drawing_source.h"
+
+namespace animkit::apps {
+
+struct DrawingArgs {
+  std::string shape = "circle";
+  std::string text, font, image, mnist, curve;
+  int index = 0;
+  bool centerline = false;
+  int threshold = -1;  // -1: Otsu
+  std::string thinning = "zhang-suen";
+  double spacing = 0.0;  // 0: the source's default
+  std::string box;       // "X,Z,HALF"; empty: in the arm's reach
+};
+
+/// Adds the options to `command`; returns the --shape option (for excludes).
+CLI::Option* add_drawing_options(CLI::App& command, DrawingArgs& args);
+
+/// The source and layout the options ask for. Errors: bad --thinning, --threshold, --box,
+/// --spacing values.
+Result<std::pair<DrawingSource, DrawingLayout>> drawing_request(const DrawingArgs& args);
+
+}  // namespace animkit::apps

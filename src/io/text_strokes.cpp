@@ -1,0 +1,253 @@
+#include "animkit/io/text_strokes.h"
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include FT_OUTLINE_H
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "animkit/core/validation.h"
+#include "animkit/trajectory/image_strokes.h"
+
+namespace animkit {
+
+namespace {
+
+// Code points of UTF-8 text; nothing when the bytes are not valid UTF-8.
+std::optional<std::vector<char32_t>> decode_utf8(std::string_view text) {
+  std::vector<char32_t> out;
+  for (std::size_t i = 0; i < text.size();) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    int extra = 0;
+    char32_t c = 0;
+    if (byte < 0x80) {
+      c = byte;
+    } else if ((byte & 0xE0) == 0xC0) {
+      c = byte & 0x1F;
+      extra = 1;
+    } else if ((byte & 0xF0) == 0xE0) {
+      c = byte & 0x0F;
+      extra = 2;
+    } else if ((byte & 0xF8) == 0xF0) {
+      c = byte & 0x07;
+      extra = 3;
+    } else {
+      return std::nullopt;
+    }
+    if (i + static_cast<std::size_t>(extra) >= text.size() && extra > 0) return std::nullopt;
+    for (int k = 1; k <= extra; ++k) {
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      if ((next & 0xC0) != 0x80) return std::nullopt;
+      c = (c << 6) | (next & 0x3F);
+    }
+    out.push_back(c);
+    i += static_cast<std::size_t>(extra) + 1;
+  }
+  return out;
+}
+
+std::string code_point_name(char32_t c) {
+  char text[16];
+  std::snprintf(text, sizeof text, "U+%04X", static_cast<unsigned>(c));
+  return text;
+}
+
+struct Library {
+  FT_Library handle = nullptr;
+  ~Library() {
+    if (face) FT_Done_Face(face);
+    if (handle) FT_Done_FreeType(handle);
+  }
+  FT_Face face = nullptr;
+};
+
+// Collects a glyph outline as polylines, flattening Bezier arcs (FreeType's decomposition
+// callbacks: move, line, conic = quadratic, cubic).
+struct Flattener {
+  Strokes strokes;
+  Point2 offset;     // where the glyph's origin sits (font units)
+  double tolerance;  // font units
+  Point2 current;
+
+  Point2 point(const FT_Vector* v) const {
+    return offset + Point2(static_cast<double>(v->x), static_cast<double>(v->y));
+  }
+  void quadratic(const Point2& p0, const Point2& p1, const Point2& p2, int depth) {
+    // Flat when the control point is within the tolerance of the chord's midpoint region.
+    if (depth > 16 || (p1 - 0.5 * (p0 + p2)).norm() <= 2.0 * tolerance) {
+      strokes.back().push_back(p2);
+      return;
+    }
+    const Point2 a = 0.5 * (p0 + p1), b = 0.5 * (p1 + p2), m = 0.5 * (a + b);
+    quadratic(p0, a, m, depth + 1);
+    quadratic(m, b, p2, depth + 1);
+  }
+  void cubic(const Point2& p0, const Point2& p1, const Point2& p2, const Point2& p3, int depth) {
+    const double d1 = (p1 - (2.0 * p0 + p3) / 3.0).norm(), d2 = (p2 - (p0 + 2.0 * p3) / 3.0).norm();
+    if (depth > 16 || std::max(d1, d2) <= tolerance) {
+      strokes.back().push_back(p3);
+      return;
+    }
+    const Point2 a = 0.5 * (p0 + p1), b = 0.5 * (p1 + p2), c = 0.5 * (p2 + p3);
+    const Point2 ab = 0.5 * (a + b), bc = 0.5 * (b + c), m = 0.5 * (ab + bc);
+    cubic(p0, a, ab, m, depth + 1);
+    cubic(m, bc, c, p3, depth + 1);
+  }
+
+  static int move_to(const FT_Vector* to, void* user) {
+    auto* f = static_cast<Flattener*>(user);
+    f->close_contour();
+    f->current = f->point(to);
+    f->strokes.push_back({f->current});
+    return 0;
+  }
+  static int line_to(const FT_Vector* to, void* user) {
+    auto* f = static_cast<Flattener*>(user);
+    f->current = f->point(to);
+    f->strokes.back().push_back(f->current);
+    return 0;
+  }
+  static int conic_to(const FT_Vector* control, const FT_Vector* to, void* user) {
+    auto* f = static_cast<Flattener*>(user);
+    const Point2 end = f->point(to);
+    f->quadratic(f->current, f->point(control), end, 0);
+    f->current = end;
+    return 0;
+  }
+  static int cubic_to(const FT_Vector* c1, const FT_Vector* c2, const FT_Vector* to, void* user) {
+    auto* f = static_cast<Flattener*>(user);
+    const Point2 end = f->point(to);
+    f->cubic(f->current, f->point(c1), f->point(c2), end, 0);
+    f->current = end;
+    return 0;
+  }
+  // Contours are closed: the last point returns to the first.
+  void close_contour() {
+    if (!strokes.empty() && strokes.back().size() > 1 &&
+        (strokes.back().back() - strokes.back().front()).norm() > 0.0) {
+      strokes.back().push_back(strokes.back().front());
+    }
+  }
+};
+
+Result<void> open_font(Library& lib, const std::filesystem::path& font) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(font, error)) {
+    return fail("font " + font.string() + ": no such file");
+  }
+  if (FT_Init_FreeType(&lib.handle)) return fail("FreeType could not start");
+  if (const FT_Error e = FT_New_Face(lib.handle, font.c_str(), 0, &lib.face)) {
+    lib.face = nullptr;
+    return fail("font " + font.string() + ": not a font FreeType can read (error " +
+                std::to_string(e) + ")");
+  }
+  if (!FT_IS_SCALABLE(lib.face)) return fail("font " + font.string() + ": not an outline font");
+  return {};
+}
+
+}  // namespace
+
+std::optional<Error> TextOptions::validate() const {
+  if (!std::isfinite(tolerance) || tolerance <= 0.0 || tolerance > 0.1) {
+    return Error{"text tolerance must be in (0, 0.1] of the em, got " + format_number(tolerance)};
+  }
+  return std::nullopt;
+}
+
+Result<Strokes> text_strokes(std::string_view utf8, const TextOptions& options) {
+  if (auto error = options.validate()) return fail(error->message);
+  if (utf8.empty()) return fail("the text is empty");
+  const auto text = decode_utf8(utf8);
+  if (!text) return fail("the text is not valid UTF-8");
+  Library lib;
+  if (auto opened = open_font(lib, options.font); !opened) return fail(opened.error().message);
+  FT_Face face = lib.face;
+  const double em = face->units_per_EM;
+  // Centre lines come from rendered glyphs: 128 pixels per em is fine enough for a skeleton.
+  constexpr int kPixelsPerEm = 128;
+  if (options.centerline) FT_Set_Pixel_Sizes(face, 0, kPixelsPerEm);
+
+  Flattener flattener{{}, Point2::Zero(), options.tolerance * em, Point2::Zero()};
+  Strokes strokes;
+  FT_UInt previous = 0;
+  double pen_x = 0.0, pen_y = 0.0;  // font units
+  for (char32_t c : *text) {
+    if (c == '\n') {
+      pen_x = 0.0;
+      pen_y -= face->height;
+      previous = 0;
+      continue;
+    }
+    const FT_UInt glyph = FT_Get_Char_Index(face, c);
+    if (glyph == 0) {
+      return fail("font " + options.font.string() + " has no glyph for " + code_point_name(c));
+    }
+    if (previous && FT_HAS_KERNING(face)) {
+      FT_Vector kerning;
+      if (!FT_Get_Kerning(face, previous, glyph, FT_KERNING_UNSCALED, &kerning)) {
+        pen_x += static_cast<double>(kerning.x);
+      }
+    }
+    if (options.centerline) {
+      if (FT_Load_Glyph(face, glyph, FT_LOAD_RENDER)) {
+        return fail("font " + options.font.string() + ": cannot render " + code_point_name(c));
+      }
+      const FT_Bitmap& bitmap = face->glyph->bitmap;
+      if (bitmap.rows > 0 && bitmap.width > 0) {
+        // The glyph on white paper with a margin, then its skeleton as for any image.
+        const int margin = 4;
+        GrayImage canvas(static_cast<int>(bitmap.width) + 2 * margin,
+                         static_cast<int>(bitmap.rows) + 2 * margin);
+        for (unsigned y = 0; y < bitmap.rows; ++y) {
+          for (unsigned x = 0; x < bitmap.width; ++x) {
+            canvas.at(static_cast<int>(x) + margin, static_cast<int>(y) + margin) =
+                static_cast<std::uint8_t>(255 - bitmap.buffer[y * bitmap.pitch + x]);
+          }
+        }
+        ImageStrokeOptions image;
+        image.threshold = 127;
+        image.polarity = InkPolarity::dark;
+        image.speck_fraction = 0.0;
+        auto skeleton = image_to_strokes(canvas, image);
+        if (skeleton) {
+          // Pixels to font units: the canvas's top-left sits at the bitmap's origin.
+          const double scale = em / kPixelsPerEm;
+          const Point2 origin(pen_x + scale * (face->glyph->bitmap_left - margin),
+                              pen_y + scale * (face->glyph->bitmap_top + margin));
+          for (Stroke s : skeleton->strokes) {
+            for (Point2& p : s) p = origin + scale * p;  // stroke y is already up (negated)
+            strokes.push_back(std::move(s));
+          }
+        }
+      }
+    } else {
+      if (FT_Load_Glyph(face, glyph, FT_LOAD_NO_SCALE | FT_LOAD_NO_BITMAP)) {
+        return fail("font " + options.font.string() + ": cannot load " + code_point_name(c));
+      }
+      FT_Outline_Funcs funcs{};
+      funcs.move_to = &Flattener::move_to;
+      funcs.line_to = &Flattener::line_to;
+      funcs.conic_to = &Flattener::conic_to;
+      funcs.cubic_to = &Flattener::cubic_to;
+      flattener.offset = Point2(pen_x, pen_y);
+      FT_Outline_Decompose(&face->glyph->outline, &funcs, &flattener);
+      flattener.close_contour();
+    }
+    pen_x += static_cast<double>(face->glyph->advance.x) *
+             (options.centerline ? em / (64.0 * kPixelsPerEm) : 1.0);
+    previous = glyph;
+  }
+  for (Stroke& s : flattener.strokes) strokes.push_back(std::move(s));
+  std::erase_if(strokes, [](const Stroke& s) { return s.size() < 2; });
+  if (strokes.empty()) return fail("the text has no visible glyphs");
+  for (Stroke& s : strokes) {
+    for (Point2& p : s) p /= em;
+  }
+  return strokes;
+}
+
+}  // namespace animkit
