@@ -92,7 +92,7 @@ int run_cloth(const ClothArgs& args) {
     describe_cloth(picture, sim->model(), sim->state(),
                    {.floor_height = cloth_floor_height(args.grid)});
   };
-  if (pictures->wants_video()) {
+  if (pictures->take_video_frame()) {
     describe_state();
     if (auto ok = pictures->add_video_frame(picture, camera); !ok)
       return report_error(ok.error().message);
@@ -125,7 +125,7 @@ int run_cloth(const ClothArgs& args) {
       if (auto ok = cache->add_frame(sim->state().positions); !ok)
         return report_error(ok.error().message);
     }
-    if (pictures->wants_video()) {
+    if (pictures->take_video_frame()) {
       describe_state();
       if (auto ok = pictures->add_video_frame(picture, camera); !ok)
         return report_error(ok.error().message);

@@ -97,7 +97,8 @@ std::function<int()> add_demo_command(CLI::App& app) {
   CLI::App* demo = app.add_subcommand(
       "demo",
       "Runs the built-in default scenes (the lab's arm drawing every shape with CCD and "
-      "FABRIK), prints a summary table and writes every output to a folder.");
+      "FABRIK, and the lab's cloth), prints summary tables and writes every output to a "
+      "folder.");
   demo->add_option("--out", args->out, "Output folder (created if needed)")->capture_default_str();
   demo->add_flag("--no-picture", args->no_picture,
                  "Write no PNG pictures (drawing.png, final.png): no OpenGL needed");

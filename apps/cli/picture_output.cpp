@@ -1,8 +1,11 @@
 #include "picture_output.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "animkit/io/png.h"
+#include "size_arg.h"
 
 namespace animkit::cli {
 
@@ -13,16 +16,14 @@ void add_picture_options(CLI::App& command, PictureArgs& args, const std::string
                      "Also render every frame into FILE.mp4 or FILE.gif (needs ffmpeg)");
   command.add_option_function<std::string>(
       "--picture-size",
-      [&args](const std::string& size) {
-        int w = 0, h = 0;
-        char tail = 0;
-        if (std::sscanf(size.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 ||
-            w > 8192 || h > 8192) {
+      [&args](const std::string& text) {
+        const auto size = apps::parse_pixel_size(text, 16);
+        if (!size) {
           throw CLI::ValidationError("--picture-size",
-                                     "must be WIDTHxHEIGHT, each 16..8192, got '" + size + "'");
+                                     "must be WIDTHxHEIGHT, each 16..8192, got '" + text + "'");
         }
-        args.width = w;
-        args.height = h;
+        args.width = size->width;
+        args.height = size->height;
       },
       "Picture and video size in pixels, WIDTHxHEIGHT (default 960x720)");
 }
@@ -39,11 +40,17 @@ Result<PictureOutput> PictureOutput::open(const PictureArgs& args, bool has_out_
   }
   output.renderer_.emplace(std::move(*renderer));
   if (!args.video.empty()) {
-    auto video = VideoWriter::open(args.video, args.width, args.height, fps);
+    constexpr double kMaxFps = 60.0;
+    output.stride_ = std::max(1, static_cast<int>(std::ceil(fps / kMaxFps - 1e-9)));
+    auto video = VideoWriter::open(args.video, args.width, args.height, fps / output.stride_);
     if (!video) return fail(video.error().message);
     output.video_.emplace(std::move(*video));
   }
   return output;
+}
+
+bool PictureOutput::take_video_frame() {
+  return video_ && offered_++ % stride_ == 0;
 }
 
 double PictureOutput::aspect() const {

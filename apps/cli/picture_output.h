@@ -29,6 +29,9 @@ class PictureOutput {
   static Result<PictureOutput> open(const PictureArgs& args, bool has_out_folder, double fps);
 
   bool wants_video() const { return video_.has_value(); }
+  /// Whether the next simulation frame goes into the video: all of them up to 60 frames per
+  /// second, every k-th one beyond (a cloth run with --dt 0.001 is not a 1000 fps video).
+  bool take_video_frame();
   bool wants_png() const { return wants_png_; }
   double aspect() const;
 
@@ -44,6 +47,8 @@ class PictureOutput {
   std::optional<PictureRenderer> renderer_;
   std::optional<VideoWriter> video_;
   bool wants_png_ = false;
+  int stride_ = 1;         // simulation frames per video frame
+  long long offered_ = 0;  // simulation frames offered to take_video_frame()
 };
 
 }  // namespace animkit::cli

@@ -13,15 +13,6 @@ namespace animkit::viewer {
 namespace {
 constexpr double kGrabRadiusPx = 12.0;
 
-// Where the cursor's ray meets the plane through `point` facing the camera.
-std::optional<Vec3> on_view_plane(const Cursor& cursor, const Vec3& point) {
-  const Vec3 normal = (cursor.camera->eye() - cursor.camera->focus).normalized();
-  const double along = cursor.ray.direction.dot(normal);
-  if (std::abs(along) < 1e-9) return std::nullopt;
-  const double t = (point - cursor.ray.origin).dot(normal) / along;
-  if (t <= 0.0) return std::nullopt;
-  return cursor.ray.origin + t * cursor.ray.direction;
-}
 // The total energy of the last steps as a line, with its range written in the corners, so a
 // user sees damping take energy out (or a bad setting pump it in).
 void energy_plot(const std::deque<double>& energy, float height) {
@@ -151,9 +142,8 @@ void ClothView::panel() {
 }
 
 bool ClothView::press(const Cursor& cursor) {
-  const double units_per_px =
-      2.0 * cursor.camera->distance * std::tan(0.5 * cursor.camera->fov_y) / cursor.view_height;
-  grabbed_ = scene_.pick(cursor.ray, kGrabRadiusPx * units_per_px);
+  grabbed_ = scene_.pick(*cursor.camera, cursor.x, cursor.y, cursor.view_width, cursor.view_height,
+                         kGrabRadiusPx);
   if (!grabbed_) return false;
   grab_plane_point_ = scene_.simulator().state().position(*grabbed_);
   return true;
@@ -161,7 +151,9 @@ bool ClothView::press(const Cursor& cursor) {
 
 void ClothView::drag(const Cursor& cursor) {
   if (!grabbed_) return;
-  if (const auto target = on_view_plane(cursor, grab_plane_point_)) {
+  // The particle moves in the plane through where it was grabbed, facing the camera.
+  const Vec3 facing = cursor.camera->eye() - cursor.camera->focus;
+  if (const auto target = intersect_plane(cursor.ray, grab_plane_point_, facing)) {
     (void)scene_.set_drag({*grabbed_, *target});  // a picked particle and a finite point
   }
 }

@@ -6,6 +6,7 @@
 
 #include "drawing_args.h"
 #include "hosts.h"
+#include "size_arg.h"
 
 namespace animkit::viewer {
 
@@ -81,13 +82,13 @@ int run(int argc, char** argv) {
   }
   options.cloth.simulation.integrator = *kind;
   if (!size.empty()) {
-    char tail = 0;
-    if (std::sscanf(size.c_str(), "%dx%d%c", &options.width, &options.height, &tail) != 2 ||
-        options.width < 400 || options.height < 300 || options.width > 8192 ||
-        options.height > 8192) {
+    const auto parsed = apps::parse_pixel_size(size, 300);
+    if (!parsed || parsed->width < 400) {
       return report_error(
           "--size must be WIDTHxHEIGHT between 400x300 and 8192x8192, got '" + size + "'", 2);
     }
+    options.width = parsed->width;
+    options.height = parsed->height;
   }
   if (frames < 0)
     return report_error("--frames must be 0 or more, got " + std::to_string(frames), 2);

@@ -23,6 +23,10 @@ Result<std::vector<unsigned char>> encode_png(const Image& image) {
   if (image.empty() || image.width <= 0 || image.height <= 0) {
     return fail("cannot encode an empty image as PNG");
   }
+  if (image.pixels.size() != static_cast<std::size_t>(image.width) * image.height) {
+    return fail("image of " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                " has " + std::to_string(image.pixels.size()) + " pixels");
+  }
   static_assert(sizeof(Pixel) == 4, "Pixel must be 4 packed bytes for the encoder");
   std::vector<unsigned char> bytes;
   if (!stbi_write_png_to_func(append_bytes, &bytes, image.width, image.height, 4,

@@ -1,5 +1,7 @@
 #include "animkit/io/video_writer.h"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cmath>
 #include <csignal>
@@ -43,10 +45,8 @@ std::optional<std::filesystem::path> find_ffmpeg() {
     if (dir.empty()) continue;
     const std::filesystem::path candidate = std::filesystem::path(dir) / "ffmpeg";
     std::error_code error;
-    const auto status = std::filesystem::status(candidate, error);
-    if (!error && std::filesystem::is_regular_file(status) &&
-        (status.permissions() & std::filesystem::perms::others_exec) !=
-            std::filesystem::perms::none) {
+    if (std::filesystem::is_regular_file(candidate, error) &&
+        ::access(candidate.c_str(), X_OK) == 0) {
       return candidate;
     }
   }
@@ -70,16 +70,23 @@ VideoWriter::VideoWriter(VideoWriter&& other) noexcept
       log_(std::move(other.log_)),
       width_(other.width_),
       height_(other.height_),
-      frames_(other.frames_) {}
+      frames_(other.frames_),
+      previous_sigpipe_(std::exchange(other.previous_sigpipe_, SIG_ERR)) {}
 
 VideoWriter::~VideoWriter() {
   abandon();
+}
+
+void VideoWriter::restore_sigpipe() {
+  if (previous_sigpipe_ != SIG_ERR) std::signal(SIGPIPE, previous_sigpipe_);
+  previous_sigpipe_ = SIG_ERR;
 }
 
 void VideoWriter::abandon() {
   if (!pipe_) return;
   pclose(pipe_);
   pipe_ = nullptr;
+  restore_sigpipe();
   std::error_code ignored;
   std::filesystem::remove(temporary_, ignored);
   std::filesystem::remove(log_, ignored);
@@ -99,6 +106,12 @@ Result<VideoWriter> VideoWriter::open(const std::filesystem::path& path, int wid
     return fail(path.string() + ": H.264 needs an even width and height, got " +
                 std::to_string(width) + "x" + std::to_string(height));
   }
+  const std::filesystem::path folder =
+      path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  std::error_code folder_error;
+  if (!std::filesystem::is_directory(folder, folder_error)) {
+    return fail("cannot write " + path.string() + ": no folder " + folder.string());
+  }
   const auto ffmpeg = find_ffmpeg();
   if (!ffmpeg) {
     return fail("cannot write " + path.string() +
@@ -112,17 +125,23 @@ Result<VideoWriter> VideoWriter::open(const std::filesystem::path& path, int wid
   if (extension == ".mp4") {
     command << " -c:v libx264 -pix_fmt yuv420p -crf 20 -movflags +faststart -f mp4";
   } else {
-    // One palette for the whole animation, made from its own frames.
-    command << " -vf 'split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse' -f gif";
+    // GIF delays are whole hundredths of a second and players stretch 1/100 s to 1/10 s, so
+    // above 50 fps frames are dropped to 50 fps (2/100 s each) to keep the timing. One
+    // palette for the whole animation, made from its own frames.
+    command << " -vf '" << (fps > 50.0 ? "fps=50," : "")
+            << "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse' -f gif";
   }
   command << " " << shell_quote(temporary.string()) << " 2> " << shell_quote(log.string());
-  std::signal(SIGPIPE, SIG_IGN);
   std::FILE* pipe = popen(command.str().c_str(), "w");
   if (!pipe) {
     return fail("cannot write " + path.string() + ": ffmpeg did not start (" +
                 std::generic_category().message(errno) + ")");
   }
-  return VideoWriter(pipe, path, temporary, log, width, height);
+  VideoWriter writer(pipe, path, temporary, log, width, height);
+  // A pipe to an ffmpeg that died would raise SIGPIPE and kill the caller; while the video is
+  // open, a failed write is an error instead (the previous handler comes back after).
+  writer.previous_sigpipe_ = std::signal(SIGPIPE, SIG_IGN);
+  return writer;
 }
 
 Result<void> VideoWriter::add_frame(const Image& frame) {
@@ -145,6 +164,7 @@ Result<void> VideoWriter::add_frame(const Image& frame) {
 Result<void> VideoWriter::finish() {
   if (!pipe_) return fail(path_.string() + ": the video is already finished");
   const int status = pclose(std::exchange(pipe_, nullptr));
+  restore_sigpipe();
   const std::string reason = last_lines(log_);
   std::error_code ignored;
   std::filesystem::remove(log_, ignored);

@@ -54,13 +54,12 @@ Result<EglContext> make_egl_context(EGLDisplay display, bool pbuffer) {
   EGLint major = 0, minor = 0;
   if (!eglInitialize(display, &major, &minor)) return fail(egl_error_name(eglGetError()));
   EglContext egl{display};
-  const auto give_up = [&](const std::string& what) {
-    const std::string message = what + ": " + egl_error_name(eglGetError());
+  // The display stays initialized: it is shared by the whole process (see ~Impl).
+  const auto give_up = [&](const std::string& what, EGLint code) {
     if (egl.surface != EGL_NO_SURFACE) eglDestroySurface(display, egl.surface);
-    eglTerminate(display);
-    return fail(message);
+    return fail(what + ": " + egl_error_name(code));
   };
-  if (!eglBindAPI(EGL_OPENGL_API)) return give_up("eglBindAPI(OpenGL)");
+  if (!eglBindAPI(EGL_OPENGL_API)) return give_up("eglBindAPI(OpenGL)", eglGetError());
   const EGLint config_attributes[] = {EGL_SURFACE_TYPE,
                                       pbuffer ? EGL_PBUFFER_BIT : 0,
                                       EGL_RENDERABLE_TYPE,
@@ -75,12 +74,12 @@ Result<EglContext> make_egl_context(EGLDisplay display, bool pbuffer) {
   EGLConfig config = nullptr;
   EGLint configs = 0;
   if (!eglChooseConfig(display, config_attributes, &config, 1, &configs) || configs == 0) {
-    return give_up("no RGB8 OpenGL config");
+    return give_up("no RGB8 OpenGL config", eglGetError());
   }
   if (pbuffer) {
     const EGLint surface_attributes[] = {EGL_WIDTH, 16, EGL_HEIGHT, 16, EGL_NONE};
     egl.surface = eglCreatePbufferSurface(display, config, surface_attributes);
-    if (egl.surface == EGL_NO_SURFACE) return give_up("eglCreatePbufferSurface");
+    if (egl.surface == EGL_NO_SURFACE) return give_up("eglCreatePbufferSurface", eglGetError());
   }
   const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
                                        3,
@@ -90,10 +89,11 @@ Result<EglContext> make_egl_context(EGLDisplay display, bool pbuffer) {
                                        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                        EGL_NONE};
   egl.context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attributes);
-  if (egl.context == EGL_NO_CONTEXT) return give_up("eglCreateContext(3.3 core)");
+  if (egl.context == EGL_NO_CONTEXT) return give_up("eglCreateContext(3.3 core)", eglGetError());
   if (!eglMakeCurrent(display, egl.surface, egl.surface, egl.context)) {
+    const EGLint code = eglGetError();  // before the clean-up overwrites it
     eglDestroyContext(display, egl.context);
-    return give_up("eglMakeCurrent");
+    return give_up("eglMakeCurrent", code);
   }
   return egl;
 }
@@ -112,18 +112,19 @@ struct OffscreenContext::Impl {
 
   ~Impl() {
     if (egl.display != EGL_NO_DISPLAY) {
-      eglMakeCurrent(egl.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      // Another context may be current (a second renderer): leave it so.
+      const bool current = eglGetCurrentContext() == egl.context;
+      if (current) eglMakeCurrent(egl.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
       eglDestroyContext(egl.display, egl.context);
       if (egl.surface != EGL_NO_SURFACE) eglDestroySurface(egl.display, egl.surface);
       // The display is not terminated: EGL displays are shared by the whole process (another
       // context may use it), and terminating unloads Mesa's driver, which the next context
       // would load again. Its few driver allocations then stay reachable until exit.
-      eglReleaseThread();
+      if (current) eglReleaseThread();
     }
-    if (window) {
-      glfwDestroyWindow(window);
-      glfwTerminate();
-    }
+    // GLFW is left initialized: terminating it would close every other GLFW window of the
+    // process too.
+    if (window) glfwDestroyWindow(window);
   }
 };
 
@@ -188,7 +189,6 @@ Result<OffscreenContext> OffscreenContext::create() {
         impl->description = "hidden GLFW window, " + renderer_name();
         return OffscreenContext(std::move(impl));
       }
-      glfwTerminate();
     }
     attempts += "; hidden window: GLFW could not open one";
   } else {

@@ -6,6 +6,10 @@ PictureRenderer::PictureRenderer(OffscreenContext context, Renderer renderer,
                                  OffscreenTarget target)
     : context_(std::move(context)), renderer_(std::move(renderer)), target_(std::move(target)) {}
 
+PictureRenderer::~PictureRenderer() {
+  if (context_.valid()) context_.make_current();
+}
+
 Result<PictureRenderer> PictureRenderer::create(int width, int height) {
   auto context = OffscreenContext::create();
   if (!context) return fail(context.error().message);

@@ -19,7 +19,13 @@ std::string log_of(GLuint object, bool is_program) {
   } else {
     glGetShaderInfoLog(object, length, nullptr, text.data());
   }
-  return text.data();
+  // Drivers write several lines; errors are reported on one.
+  std::string log = text.data();
+  while (!log.empty() && (log.back() == '\n' || log.back() == ' ')) log.pop_back();
+  for (char& c : log) {
+    if (c == '\n') c = ';';
+  }
+  return log;
 }
 
 Result<GLuint> compile(GLenum stage, const char* source, const std::string& what) {

@@ -72,7 +72,12 @@ out float g_across;
 void main() {
   vec4 a = gl_in[0].gl_Position;
   vec4 b = gl_in[1].gl_Position;
-  if (a.w <= 0.0 || b.w <= 0.0) return;  // behind the eye
+  // Clip against the near plane (z = -w) so a line reaching behind the eye keeps its visible
+  // part instead of vanishing (a zoomed-in view of the ground grid).
+  float da = a.z + a.w, db = b.z + b.w;
+  if (da < 0.0 && db < 0.0) return;
+  if (da < 0.0) a = mix(a, b, da / (da - db));
+  if (db < 0.0) b = mix(b, a, db / (db - da));
   vec2 half_viewport = 0.5 * viewport;
   vec2 d = (b.xy / b.w - a.xy / a.w) * half_viewport;
   float len = length(d);

@@ -110,11 +110,16 @@ OrbitCamera OrbitCamera::framing(const Eigen::AlignedBox3d& box, double aspect, 
   return camera;
 }
 
-std::optional<Vec3> intersect_horizontal_plane(const Ray& ray, double height) {
-  if (std::abs(ray.direction.y()) < 1e-9) return std::nullopt;
-  const double t = (height - ray.origin.y()) / ray.direction.y();
+std::optional<Vec3> intersect_plane(const Ray& ray, const Vec3& point, const Vec3& normal) {
+  const double along = ray.direction.dot(normal);
+  if (std::abs(along) < 1e-9 * normal.norm()) return std::nullopt;
+  const double t = (point - ray.origin).dot(normal) / along;
   if (t <= 0.0) return std::nullopt;
   return ray.origin + t * ray.direction;
+}
+
+std::optional<Vec3> intersect_horizontal_plane(const Ray& ray, double height) {
+  return intersect_plane(ray, Vec3(0.0, height, 0.0), Vec3::UnitY());
 }
 
 }  // namespace animkit

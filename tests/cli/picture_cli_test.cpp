@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../support/picture_checks.h"
 #include "../support/run_command.h"
 #include "../support/temp_files.h"
 #include "animkit/io/png.h"
@@ -17,6 +18,7 @@ using animkit::Image;
 using animkit::Pixel;
 using animkit::read_image;
 using animkit::testing_support::run_command;
+using namespace animkit::testing_support;
 
 const std::string kCli = ANIMKIT_CLI_PATH;
 // No window system and no EGL vendor: glvnd finds no driver, GLFW no display.
@@ -26,35 +28,6 @@ const std::string kNoDisplayNoEgl =
 
 fs::path fresh_dir(const std::string& name) {
   return animkit::testing_support::fresh_dir("pictures_" + name);
-}
-
-int count(const Image& image, bool (*test)(const Pixel&), int x0 = 0) {
-  int n = 0;
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = x0; x < image.width; ++x) n += test(image.at(x, y));
-  }
-  return n;
-}
-bool red(const Pixel& p) {
-  return p.r > p.g + 70 && p.r > p.b + 70;
-}
-bool green(const Pixel& p) {
-  return p.g > p.r + 50 && p.g > p.b + 40;
-}
-bool bone(const Pixel& p) {
-  return p.b > p.r + 40 && p.b > p.g + 15;
-}
-bool cloth_front(const Pixel& p) {
-  return p.r > p.b + 60 && p.g < p.r;
-}
-bool cloth_back(const Pixel& p) {
-  return p.b > p.r + 40;
-}
-bool cloth(const Pixel& p) {
-  return cloth_front(p) || cloth_back(p);
-}
-bool dark(const Pixel& p) {
-  return p.r < 60 && p.g < 60 && p.b < 60;
 }
 
 Image read_png(const fs::path& path) {
@@ -71,8 +44,8 @@ TEST(IkPictures, DrawingPngShowsTheFinishedDrawingAndTheArm) {
   const Image image = read_png(out / "drawing.png");
   ASSERT_EQ(image.width, 960);
   ASSERT_EQ(image.height, 720);
-  EXPECT_GT(count(image, red), 1000);   // the star, drawn
-  EXPECT_GT(count(image, bone), 3000);  // the arm
+  EXPECT_GT(count_pixels(image, is_red), 1000);        // the star, drawn
+  EXPECT_GT(count_pixels(image, is_bone_blue), 3000);  // the arm
   EXPECT_FALSE(fs::exists(out / "drawing.png.tmp"));
 }
 
@@ -91,7 +64,7 @@ TEST(ClothPictures, FinalPngShowsTheCloth) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Image image = read_png(out / "final.png");
   ASSERT_EQ(image.width, 480);
-  EXPECT_GT(count(image, cloth), 480 * 360 / 20);
+  EXPECT_GT(count_pixels(image, is_cloth), 480 * 360 / 20);
 }
 
 TEST(Video, EveryFrameGoesToTheVideo) {
@@ -100,7 +73,12 @@ TEST(Video, EveryFrameGoesToTheVideo) {
   const auto r = run_command(kCli + " ik --shape square --picture-size 320x240 --video " +
                              (out / "square.gif").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_GT(fs::file_size(out / "square.gif"), 10'000u);
+  // One GIF frame per target: the square has 150.
+  const auto gif_frames = run_command(
+      "ffprobe -v error -count_frames -select_streams v:0 "
+      "-show_entries stream=nb_read_frames -of csv=p=0 " +
+      (out / "square.gif").string());
+  EXPECT_EQ(gif_frames.out, "125\n");  // 150 frames at 60 fps, kept at 50 fps for GIF
   const auto c = run_command(kCli + " cloth --frames 30 --picture-size 320x240 --video " +
                              (out / "cloth.mp4").string());
   ASSERT_EQ(c.exit_code, 0) << c.err;
@@ -121,6 +99,32 @@ TEST(Video, MissingFfmpegStopsTheRunBeforeAnyFile) {
   EXPECT_EQ(r.err, "animkit: error: cannot write " + (out / "a.mp4").string() +
                        ": ffmpeg is not installed (on Debian: apt-get install ffmpeg)\n");
   EXPECT_FALSE(fs::exists(out / "run"));
+}
+
+TEST(Video, AVideoInAMissingFolderIsOneLineAndStopsFirst) {
+  if (!animkit::find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
+  const auto r = run_command(kCli + " cloth --frames 5 --video /nonexistent-animkit/a.gif");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "animkit: error: cannot write /nonexistent-animkit/a.gif: no folder "
+            "/nonexistent-animkit\n");
+}
+
+TEST(Video, AFastSimulationIsCappedAt60FramesPerSecondAtMost) {
+  if (!animkit::find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
+  const fs::path out = fresh_dir("video_fast");
+  // 200 steps per second: every 4th step goes into a 50 fps video (the next stride that
+  // stays within 60 fps).
+  const auto r = run_command(kCli +
+                             " cloth --frames 120 --dt 0.005 --picture-size 160x120 "
+                             "--video " +
+                             (out / "c.mp4").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto probe = run_command(
+      "ffprobe -v error -select_streams v:0 -count_frames "
+      "-show_entries stream=nb_read_frames,r_frame_rate -of csv=p=0 " +
+      (out / "c.mp4").string());
+  EXPECT_EQ(probe.out, "50/1,31\n");  // 121 states (start and 120 steps), every 4th
 }
 
 TEST(Pictures, NoDisplayAndNoEglIsAClearErrorAndWritesNothing) {
@@ -157,26 +161,27 @@ TEST(Viewer, CapturesTheIkSceneMidDrawingWithItsPanel) {
   ASSERT_EQ(image.width, 1280);
   ASSERT_EQ(image.height, 800);
   const int panel = 380;
-  EXPECT_GT(count(image, green, panel), 500);  // targets still to draw
-  EXPECT_GT(count(image, red, panel), 500);    // the half-drawn path
-  EXPECT_GT(count(image, bone, panel), 2000);  // the arm
+  EXPECT_GT(count_pixels(image, is_green, panel), 500);       // targets still to draw
+  EXPECT_GT(count_pixels(image, is_red, panel), 500);         // the half-drawn path
+  EXPECT_GT(count_pixels(image, is_bone_blue, panel), 2000);  // the arm
   // The side panel: dark ImGui background over most of its area.
   int dark_panel = 0;
   for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < panel; ++x) dark_panel += dark(image.at(x, y));
+    for (int x = 0; x < panel; ++x) dark_panel += is_dark(image.at(x, y));
   }
   EXPECT_GT(dark_panel, panel * image.height / 2);
 }
 
 TEST(Viewer, CapturesTheHangingCloth) {
   const fs::path out = fresh_dir("viewer_cloth");
-  const auto r = run_command(kViewer + " --scene cloth --frames 150 --size 800x600 --capture " +
+  const auto r = run_command(kViewer + " --scene cloth --frames 300 --size 800x600 --capture " +
                              (out / "cloth.png").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Image image = read_png(out / "cloth.png");
   ASSERT_EQ(image.width, 800);
-  EXPECT_GT(count(image, cloth, 380), 420 * 600 / 10);
-  EXPECT_GT(count(image, cloth_front, 380), 420 * 600 / 20);  // hanging: its front faces us
+  EXPECT_GT(count_pixels(image, is_cloth, 380), 420 * 600 / 10);
+  EXPECT_GT(count_pixels(image, is_cloth_front, 380),
+            420 * 600 / 20);  // hanging: its front faces us
 }
 
 TEST(Viewer, RunsThreeFramesInAWindowAndExits) {

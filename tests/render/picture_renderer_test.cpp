@@ -4,36 +4,48 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
+#include "../support/picture_checks.h"
 #include "animkit/scene/cloth_scene.h"
 #include "animkit/scene/ik_scene.h"
 #include "animkit/trajectory/lab_shapes.h"
-#include "picture_checks.h"
 
 namespace animkit {
 namespace {
 
 using namespace testing_support;
 
-PictureRenderer& shared_renderer() {
+// One renderer for the whole binary (making a context takes a while). Without one, every
+// test stops here with the reason rather than crashing.
+PictureRenderer* shared_renderer_or_null() {
   static auto renderer = PictureRenderer::create(480, 360);
-  if (!renderer) ADD_FAILURE() << renderer.error().message;
-  return *renderer;
+  if (!renderer) {
+    ADD_FAILURE() << renderer.error().message;
+    return nullptr;
+  }
+  return &*renderer;
 }
+class PictureRendererTest : public testing::Test {
+ protected:
+  void SetUp() override { ASSERT_NE(shared_renderer_or_null(), nullptr); }
+  static PictureRenderer& shared_renderer() { return *shared_renderer_or_null(); }
+};
 
-TEST(PictureRenderer, MakesAContextWithoutADisplay) {
+TEST_F(PictureRendererTest, MakesAContextWithoutADisplay) {
   auto& renderer = shared_renderer();
   EXPECT_FALSE(renderer.context().description().empty());
   EXPECT_EQ(renderer.width(), 480);
   EXPECT_EQ(renderer.height(), 360);
 }
 
-TEST(PictureRenderer, EmptySceneIsBackgroundEverywhere) {
+TEST_F(PictureRendererTest, EmptySceneIsBackgroundEverywhere) {
   const Image image = shared_renderer().render(DrawList{}, OrbitCamera{});
   ASSERT_EQ(image.width, 480);
   for (const Pixel& p : image.pixels) ASSERT_TRUE(is_background(p));
 }
 
-TEST(PictureRenderer, IkSceneMidDrawingShowsTargetsPathAndArm) {
+TEST_F(PictureRendererTest, IkSceneMidDrawingShowsTargetsPathAndArm) {
   auto scene =
       IkScene::create(lab_arm(), Trajectory::all_pen_down(lab_shape_targets(LabShape::star)));
   ASSERT_TRUE(scene.has_value()) << scene.error().message;
@@ -76,7 +88,7 @@ TEST(PictureRenderer, IkSceneMidDrawingShowsTargetsPathAndArm) {
   EXPECT_TRUE(is_background(image.at(image.width - 3, 2)));
 }
 
-TEST(PictureRenderer, UnreachableTargetIsMarked) {
+TEST_F(PictureRendererTest, UnreachableTargetIsMarked) {
   auto scene = IkScene::create(lab_arm(), Trajectory::all_pen_down({Vec3(0.3, 0.0, 0.2)}));
   ASSERT_TRUE(scene.has_value());
   ASSERT_TRUE(scene->follow(Vec3(3.5, 0.0, 0.0)).has_value());
@@ -94,7 +106,7 @@ TEST(PictureRenderer, UnreachableTargetIsMarked) {
       << int(p->r) << "," << int(p->g) << "," << int(p->b);
 }
 
-TEST(PictureRenderer, HangingClothCoversItsArea) {
+TEST_F(PictureRendererTest, HangingClothCoversItsArea) {
   auto scene = ClothScene::create();
   ASSERT_TRUE(scene.has_value()) << scene.error().message;
   for (int i = 0; i < 90; ++i) ASSERT_TRUE(scene->step().has_value());
@@ -129,11 +141,35 @@ TEST(PictureRenderer, HangingClothCoversItsArea) {
   }
 }
 
-TEST(OffscreenTarget, RejectsAnAbsurdSize) {
+TEST_F(PictureRendererTest, OffscreenTargetRejectsAnAbsurdSize) {
   shared_renderer().context().make_current();
   auto target = OffscreenTarget::create(0, 100);
   ASSERT_FALSE(target.has_value());
   EXPECT_EQ(target.error().message, "picture size must be between 1x1 and 8192x8192, got 0x100");
+}
+
+// Two renderers side by side (the CLI's demo makes one after another): each draws into its
+// own context, and deleting one leaves the other working.
+TEST(TwoPictureRenderers, DoNotDisturbEachOther) {
+  auto first = PictureRenderer::create(64, 48);
+  ASSERT_TRUE(first.has_value()) << first.error().message;
+  DrawList list;
+  list.add_point(Vec3::Zero(), palette::path, 20.0f);
+  OrbitCamera camera;
+  camera.focus = Vec3::Zero();
+  const Image expected = first->render(list, camera);
+  {
+    auto second = PictureRenderer::create(64, 48);
+    ASSERT_TRUE(second.has_value());
+    const Image other = second->render(list, camera);
+    EXPECT_EQ(0, std::memcmp(other.pixels.data(), expected.pixels.data(),
+                             expected.pixels.size() * sizeof(Pixel)));
+  }  // the second one goes while the first one's objects must stay
+  const Image again = first->render(list, camera);
+  ASSERT_EQ(again.pixels.size(), expected.pixels.size());
+  EXPECT_EQ(0, std::memcmp(again.pixels.data(), expected.pixels.data(),
+                           expected.pixels.size() * sizeof(Pixel)));
+  EXPECT_TRUE(is_red(again.at(32, 24)));
 }
 
 }  // namespace

@@ -79,12 +79,58 @@ TEST(ClothScene, ApplyKeepsTheMotionAndResetStartsOver) {
   EXPECT_EQ(scene.options().grid.cells, 14);  // unchanged
 }
 
-TEST(ClothScene, PickFindsTheParticleUnderTheRay) {
+TEST(ClothScene, PickFindsTheParticleUnderTheCursorNearestTheEye) {
   ClothScene scene = lab_cloth();
-  const Vec3 p = scene.simulator().state().position(37);
-  const Ray ray{p + Vec3(0.05, 3.0, 0.0), Vec3(0.0, -1.0, 0.0)};  // from above, a bit off
-  EXPECT_EQ(scene.pick(ray, 0.06), 37);
-  EXPECT_FALSE(scene.pick(ray, 0.01).has_value());
+  // Straight down from above the sheet: every particle projects apart.
+  OrbitCamera camera;
+  camera.focus = Vec3(1.0, 1.5, 0.0);
+  camera.pitch = 1.5;
+  camera.distance = 4.0;
+  const auto at = camera.project(scene.simulator().state().position(37), 800.0, 600.0);
+  ASSERT_TRUE(at.has_value());
+  EXPECT_EQ(scene.pick(camera, at->x() + 3.0, at->y(), 800.0, 600.0, 6.0), 37);
+  EXPECT_FALSE(scene.pick(camera, at->x() + 30.0, at->y() + 30.0, 800.0, 600.0, 2.0).has_value());
+  // Edge-on along a grid row, particles line up one behind another: the nearest one wins.
+  OrbitCamera side;
+  side.focus = Vec3(1.0, 1.5, 0.0);
+  side.yaw = 1.5707963267948966;  // looking from +x towards -x, along the row of particles
+  side.pitch = 0.0;
+  side.distance = 5.0;
+  const int near_end = grid_index(10, 10, 5), far_end = grid_index(10, 0, 5);
+  const auto p = side.project(scene.simulator().state().position(near_end), 800.0, 600.0);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_EQ(scene.pick(side, p->x(), p->y(), 800.0, 600.0, 4.0), near_end);
+  EXPECT_NE(scene.pick(side, p->x(), p->y(), 800.0, 600.0, 4.0), far_end);
+}
+
+TEST(ClothScene, ReleasingTheDragRemovesItsForce) {
+  ClothScene dragged = lab_cloth();
+  const int p = free_corner(dragged);
+  ASSERT_TRUE(dragged.set_drag({p, Vec3(3.0, 3.0, 0.0)}).has_value());
+  ASSERT_TRUE(dragged.step().has_value());
+  dragged.clear_drag();
+  // From the same state, the released cloth steps exactly as a cloth never dragged.
+  const ClothState after_drag = dragged.simulator().state();
+  ASSERT_TRUE(dragged.step().has_value());
+  ClothSimulator reference = *ClothSimulator::create(make_grid_cloth(), {});
+  ASSERT_TRUE(reference.set_state(after_drag).has_value());
+  ASSERT_TRUE(reference.step(dragged.options().time_step).has_value());
+  EXPECT_LT((reference.state().positions - dragged.simulator().state().positions).norm(), 1e-12);
+}
+
+TEST(ClothScene, TheMouseSpringStaysStableAtTheLargestTimeStep) {
+  ClothSceneOptions options;
+  options.time_step = 0.1;  // the viewer's slider maximum
+  for (IntegratorKind kind : {IntegratorKind::implicit_pcg, IntegratorKind::explicit_euler}) {
+    options.simulation.integrator = kind;
+    auto scene = ClothScene::create(options);
+    ASSERT_TRUE(scene.has_value());
+    const int p = free_corner(*scene);
+    const Vec3 target(2.5, 2.5, 1.0);
+    ASSERT_TRUE(scene->set_drag({p, target}).has_value());
+    for (int i = 0; i < 300; ++i) ASSERT_TRUE(scene->step().has_value()) << "step " << i;
+    EXPECT_LT((scene->simulator().state().position(p) - target).norm(), 1.5);
+  }
 }
 
 TEST(ClothScene, RecordsTheEnergyOfEveryStep) {

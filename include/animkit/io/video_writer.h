@@ -1,6 +1,7 @@
 #pragma once
 // Videos (.mp4 H.264 or .gif) through the ffmpeg program, fed raw frames on a pipe. Written
 // whole or not at all: ffmpeg writes a temporary file that is renamed when it succeeds.
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -16,9 +17,10 @@ std::optional<std::filesystem::path> find_ffmpeg();
 class VideoWriter {
  public:
   /// Starts ffmpeg for a width x height video at `fps` frames per second. The format follows
-  /// the extension: .mp4 or .gif. Errors: another extension, ffmpeg not installed (the
-  /// message says how to install it), odd sizes for .mp4, ffmpeg failing to start.
-  /// Ignores SIGPIPE for the process, so a crashing ffmpeg is an error, not a killed caller.
+  /// the extension: .mp4 or .gif. Errors: another extension, a folder that does not exist,
+  /// ffmpeg not installed (the message says how to install it), odd sizes for .mp4, ffmpeg
+  /// failing to start. While the video is open SIGPIPE is ignored, so a crashing ffmpeg is an
+  /// error, not a killed caller; the previous handler is restored when it finishes.
   static Result<VideoWriter> open(const std::filesystem::path& path, int width, int height,
                                   double fps);
 
@@ -37,10 +39,12 @@ class VideoWriter {
   VideoWriter(std::FILE* pipe, std::filesystem::path path, std::filesystem::path temporary,
               std::filesystem::path log, int width, int height);
   void abandon();
+  void restore_sigpipe();
 
   std::FILE* pipe_ = nullptr;
   std::filesystem::path path_, temporary_, log_;
   int width_ = 0, height_ = 0, frames_ = 0;
+  void (*previous_sigpipe_)(int) = SIG_ERR;
 };
 
 }  // namespace animkit

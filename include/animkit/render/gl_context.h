@@ -21,6 +21,8 @@ class OffscreenContext {
 
   /// Makes the context current on this thread.
   void make_current() const;
+  /// False once moved from.
+  bool valid() const { return impl_ != nullptr; }
   /// How the context was made and by which renderer, e.g. "EGL surfaceless, llvmpipe (LLVM 15)".
   const std::string& description() const;
 

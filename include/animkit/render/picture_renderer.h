@@ -17,6 +17,14 @@ class PictureRenderer {
   /// Errors: no OpenGL context (the message says what was tried), a bad size.
   static Result<PictureRenderer> create(int width, int height);
 
+  PictureRenderer(PictureRenderer&&) noexcept = default;
+  /// Not assignable: the old renderer's OpenGL objects must go while its own context is
+  /// current, which a member-wise assignment cannot arrange.
+  PictureRenderer& operator=(PictureRenderer&&) = delete;
+  /// Makes its context current, so its buffers and shaders are deleted there and not in
+  /// whichever context another renderer left current.
+  ~PictureRenderer();
+
   /// Draws `list` seen by `camera` over the background colour and reads the picture back.
   Image render(const DrawList& list, const OrbitCamera& camera,
                Rgba background = palette::background);

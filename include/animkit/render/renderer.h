@@ -1,7 +1,9 @@
 #pragma once
 // Draws a DrawList with OpenGL 3.3 core: lit two-sided triangles, screen-space-wide lines and
 // round point markers. Needs a current context (OffscreenContext or a window's); it draws into
-// whatever framebuffer is bound. The only GL state it leaves changed is what it binds to draw.
+// whatever framebuffer is bound. Each draw sets the state it needs (viewport, depth test,
+// blending, program, vertex array) and leaves depth testing on and blending off; callers that
+// draw more (Dear ImGui) set their own state.
 #include <Eigen/Core>
 #include <memory>
 

@@ -15,7 +15,9 @@ namespace animkit {
 struct ClothSceneOptions {
   GridClothOptions grid;          ///< the lab's cloth by default
   SimulationOptions simulation;   ///< implicit Euler with PCG by default
-  double time_step = 1.0 / 30.0;  ///< seconds per frame (the lab: the frame's duration), > 0
+  /// Seconds per frame, > 0: the lab's choice, the frame's duration (a 60 Hz screen), as the
+  /// CLI's --dt default.
+  double time_step = 1.0 / 60.0;
 
   std::optional<Error> validate() const;
 };
@@ -69,8 +71,10 @@ class ClothScene {
   /// Pins a free particle where it is now, or frees a pinned one. Errors: index out of range.
   Result<void> toggle_pin(int particle);
 
-  /// The particle nearest to the ray, if one passes within `radius` (scene units) of it.
-  std::optional<int> pick(const Ray& ray, double radius) const;
+  /// The particle under pixel (x, y) of a width x height view: of those drawn within
+  /// `radius_px` pixels of it, the one nearest the eye (the one the user sees).
+  std::optional<int> pick(const OrbitCamera& camera, double x, double y, double width,
+                          double height, double radius_px) const;
   /// Starts or moves the mouse spring. Errors: index out of range, non-finite target.
   Result<void> set_drag(const ClothDrag& drag);
   void clear_drag();

@@ -77,7 +77,7 @@ class IkScene {
   /// boxes, joints as spheres) and the last target when it was out of reach (orange, joined
   /// to the end effector).
   void describe(DrawList& out) const;
-  /// A box around the targets and the whole reach of the arm: what a picture should frame.
+  /// A box around the targets, the root and the arm's current pose: what a picture frames.
   Eigen::AlignedBox3d focus_bounds() const;
 
  private:

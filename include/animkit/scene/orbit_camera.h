@@ -47,7 +47,10 @@ struct OrbitCamera {
                              double pitch, double margin = 0.08);
 };
 
-/// Where a ray meets the plane y = height, or nothing when it runs parallel or points away.
+/// Where a ray meets the plane through `point` with normal `normal`, or nothing when it runs
+/// parallel to the plane or points away from it.
+std::optional<Vec3> intersect_plane(const Ray& ray, const Vec3& point, const Vec3& normal);
+/// Where a ray meets the plane y = height (the drawing plane is y = 0).
 std::optional<Vec3> intersect_horizontal_plane(const Ray& ray, double height);
 
 }  // namespace animkit
