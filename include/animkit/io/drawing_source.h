@@ -29,11 +29,11 @@ struct DrawingSource {
 struct DrawingLayout {
   /// Resample every stroke by arc length to this spacing (scene units, > 0). Text, images and
   /// curves default to 0.01; built-in shapes keep the lab's own sampling unless it is given.
-  std::optional<double> spacing;
+  std::optional<double> spacing = std::nullopt;
   /// Where text, images and curves go; default reachable_box() of the arm (fill 0.7).
   /// Built-in shapes keep the lab's coordinates.
-  std::optional<DrawingBox> box;
-  TravelOptions travel;
+  std::optional<DrawingBox> box = std::nullopt;
+  TravelOptions travel = {};
 };
 
 struct PreparedDrawing {
