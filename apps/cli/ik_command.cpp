@@ -100,7 +100,7 @@ int run(const IkArgs& args) {
         drawing->spacing_before, drawing->spacing_after};
   } else {
     const apps::DrawingArgs& d = args.drawing;
-    if (!d.text.empty() || !d.image.empty() || !d.mnist.empty() || !d.curve.empty()) {
+    if (d.text || !d.image.empty() || !d.mnist.empty() || !d.curve.empty()) {
       return report_error("--target excludes --text, --image, --mnist and --curve");
     }
     Vec3 target;

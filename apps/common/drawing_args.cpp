@@ -52,9 +52,9 @@ Result<std::pair<DrawingSource, DrawingLayout>> drawing_request(const DrawingArg
   DrawingSource source;
   DrawingLayout layout;
   source.shape = args.shape;
-  if (!args.text.empty()) {
+  if (args.text) {
     source.kind = DrawingSourceKind::text;
-    source.text = args.text;
+    source.text = *args.text;
     // "\n" typed on a command line arrives as two characters: make it a line break.
     for (std::size_t at = source.text.find("\\n"); at != std::string::npos;
          at = source.text.find("\\n", at + 1)) {
@@ -80,7 +80,7 @@ Result<std::pair<DrawingSource, DrawingLayout>> drawing_request(const DrawingArg
   source.image.thinning = *thinning;
   if (args.threshold != -1) source.image.threshold = args.threshold;
   if (auto error = source.image.validate()) return fail(error->message);
-  if (args.spacing != 0.0) layout.spacing = args.spacing;
+  layout.spacing = args.spacing;
   if (!args.box.empty()) {
     DrawingBox box;
     char tail = 0;

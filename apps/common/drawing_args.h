@@ -12,12 +12,13 @@ namespace animkit::apps {
 
 struct DrawingArgs {
   std::string shape = "circle";
-  std::string text, font, image, mnist, curve;
+  std::optional<std::string> text;  // set (even to "") when --text is given
+  std::string font, image, mnist, curve;
   int index = 0;
   bool centerline = false;
   int threshold = -1;  // -1: Otsu
   std::string thinning = "zhang-suen";
-  double spacing = 0.0;  // 0: the source's default
+  std::optional<double> spacing;  // nothing: the source's default
   std::string box;       // "X,Z,HALF"; empty: in the arm's reach
 };
 
