@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
   build-essential cmake make git pkg-config
   libeigen3-dev nlohmann-json3-dev libcli11-dev libstb-dev
+  # Text drawings: FreeType and the default font, DejaVu Sans.
+  libfreetype-dev fonts-dejavu-core
   libgtest-dev libgmock-dev libbenchmark-dev
   # Pictures and the viewer: OpenGL through glvnd, Mesa's software renderer (llvmpipe) for EGL
   # without a display and GLX in a window, GLFW and Dear ImGui.

@@ -31,6 +31,7 @@ struct IkArgs {
   std::string target;
   std::string out;
   PictureArgs pictures;
+  std::optional<int> picture_frame;
 };
 
 // "text QD: 4 strokes, 1234 targets (56 with the pen up), spacing 0.0100 (cv 0.012), before
@@ -117,7 +118,8 @@ int run(const IkArgs& args) {
   if (!args.out.empty()) {
     if (auto ok = ensure_output_directory(args.out); !ok) return report_error(ok.error().message);
   }
-  if (auto rendered = render_ik_pictures(trajectory, *run, *pictures, args.out); !rendered) {
+  if (auto rendered = render_ik_pictures(trajectory, *run, *pictures, args.out, args.picture_frame);
+      !rendered) {
     return report_error(rendered.error().message);
   }
   if (!args.out.empty()) {
@@ -180,6 +182,9 @@ std::function<int()> add_ik_command(CLI::App& app) {
                  "Folder for metrics.json, path.csv, drawing.svg and drawing.png (created if "
                  "needed)");
   add_picture_options(*ik, args->pictures, "drawing.png");
+  ik->add_option("--picture-frame", args->picture_frame,
+                 "Show frame N (from 0) in drawing.png instead of the last: the arm mid-drawing")
+      ->check(CLI::NonNegativeNumber);
   return [args] { return run(*args); };
 }
 

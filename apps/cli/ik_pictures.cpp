@@ -1,5 +1,7 @@
 #include "ik_pictures.h"
 
+#include <algorithm>
+
 #include "animkit/scene/ik_scene.h"
 
 namespace animkit::cli {
@@ -20,8 +22,13 @@ void describe_frame(DrawList& list, const Trajectory& trajectory, const DrawingF
 }  // namespace
 
 Result<void> render_ik_pictures(const Trajectory& trajectory, const DrawingRun& run,
-                                PictureOutput& pictures, const std::filesystem::path& out) {
+                                PictureOutput& pictures, const std::filesystem::path& out,
+                                std::optional<int> picture_frame) {
   if (run.frames.empty()) return {};
+  const std::size_t last = static_cast<std::size_t>(std::clamp<long long>(
+      picture_frame.value_or(-1) < 0 ? static_cast<long long>(run.frames.size()) - 1
+                                     : *picture_frame,
+      0, static_cast<long long>(run.frames.size()) - 1));
   // One camera for the whole run, so the video does not jump: it frames the targets and every
   // pose the arm took.
   Eigen::AlignedBox3d bounds;
@@ -31,7 +38,7 @@ Result<void> render_ik_pictures(const Trajectory& trajectory, const DrawingRun& 
   }
   const OrbitCamera camera =
       OrbitCamera::framing(bounds, pictures.aspect(), kIkPictureYaw, kIkPicturePitch);
-  DrawList list;
+  DrawList list, picture;
   std::vector<std::vector<Vec3>> path;  // the current lap's strokes, up to the frame drawn
   for (std::size_t f = 0; f < run.frames.size(); ++f) {
     const DrawingFrame& frame = run.frames[f];
@@ -45,10 +52,11 @@ Result<void> render_ik_pictures(const Trajectory& trajectory, const DrawingRun& 
       describe_frame(list, trajectory, frame, path);
       if (auto ok = pictures.add_video_frame(list, camera); !ok) return ok;
     }
+    if (f == last) describe_frame(picture, trajectory, frame, path);
+    if (f >= last && !pictures.wants_video()) break;
   }
   if (auto ok = pictures.finish_video(); !ok) return ok;
-  describe_frame(list, trajectory, run.frames.back(), path);
-  return pictures.write_png(out / "drawing.png", list, camera);
+  return pictures.write_png(out / "drawing.png", picture, camera);
 }
 
 }  // namespace animkit::cli
