@@ -128,7 +128,7 @@ TEST(ClothScene, TheMouseSpringStaysStableAtTheLargestTimeStep) {
     const int p = free_corner(*scene);
     const Vec3 target(2.5, 2.5, 1.0);
     ASSERT_TRUE(scene->set_drag({p, target}).has_value());
-    for (int i = 0; i < 300; ++i) ASSERT_TRUE(scene->step().has_value()) << "step " << i;
+    for (int i = 0; i < 100; ++i) ASSERT_TRUE(scene->step().has_value()) << "step " << i;
     EXPECT_LT((scene->simulator().state().position(p) - target).norm(), 1.5);
   }
 }
