@@ -91,7 +91,18 @@ Result<PreparedDrawing> prepare_drawing(const DrawingSource& source, const Drawi
   const std::optional<double> spacing = source.kind == DrawingSourceKind::shape
                                             ? layout.spacing
                                             : layout.spacing.value_or(kDefaultSpacing);
-  if (spacing) placed = resample(placed, {.spacing = *spacing});
+  if (spacing) {
+    // Refuse before allocating: a tiny spacing on a long drawing would ask for billions.
+    double length = 0.0;
+    for (const Stroke& stroke : placed) length += stroke_length(stroke);
+    const double samples = length / *spacing + static_cast<double>(placed.size());
+    if (samples > kMaxDrawingTargets) {
+      return fail("spacing " + format_number(*spacing) + " would make about " +
+                  format_number(samples) + " targets, more than the limit of " +
+                  format_number(kMaxDrawingTargets));
+    }
+    placed = resample(placed, {.spacing = *spacing});
+  }
   out.spacing_after = spacing_stats(placed);
   out.strokes = static_cast<int>(placed.size());
   auto trajectory = to_trajectory(placed, layout.travel);

@@ -122,6 +122,8 @@ TEST(PrepareDrawing, BadRequestsAreClearErrors) {
   source.shape = "circle";
   EXPECT_EQ(prepare_drawing(source, {.spacing = -1.0}, arm()).error().message,
             "spacing must be a positive finite number, got -1");
+  EXPECT_EQ(prepare_drawing(source, {.spacing = 1e-9}, arm()).error().message,
+            "spacing 1e-09 would make about 3.7445e+09 targets, more than the limit of 1e+06");
   source.kind = DrawingSourceKind::image;
   source.file = "/nonexistent/seven.png";
   EXPECT_EQ(prepare_drawing(source, {}, arm()).error().message,

@@ -44,6 +44,9 @@ struct PreparedDrawing {
   SpacingStats spacing_after;   ///< of the strokes the arm is given
 };
 
+/// Most targets a prepared drawing may have (a spacing that asks for more is refused).
+constexpr double kMaxDrawingTargets = 1e6;
+
 /// Built-in shapes, in menu order: the lab's five, then "spiral" (unevenly sampled).
 std::vector<std::string> builtin_shape_names();
 
