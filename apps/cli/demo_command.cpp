@@ -1,11 +1,13 @@
 #include "demo_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
 
 #include "animkit/io/atomic_write.h"
+#include "animkit/io/drawing_source.h"
 #include "animkit/io/ik_report.h"
 #include "animkit/kinematics/chain.h"
 #include "animkit/kinematics/drawing_session.h"
@@ -24,7 +26,33 @@ struct DemoArgs {
   bool no_picture = false;
 };
 
-// Every lab shape with every solver, lab defaults; one folder of reports per drawing and a
+// Draws one trajectory into dir, writes its reports and picture, prints its row and adds it to
+// the summary; 0 or the exit code of the error it reported.
+int draw_into(const Chain& chain, const std::filesystem::path& dir, const IkRunLabel& label,
+              const Trajectory& trajectory, const DrawingOptions& options, PictureOutput& pictures,
+              std::string& csv) {
+  const auto run = run_drawing(chain, trajectory.targets, options, trajectory.pen_down);
+  if (!run) return report_error(run.error().message);
+  if (auto ok = ensure_output_directory(dir); !ok) return report_error(ok.error().message);
+  if (auto ok = render_ik_pictures(trajectory, *run, pictures, dir); !ok) {
+    return report_error(ok.error().message);
+  }
+  if (auto ok = write_ik_reports(dir, label, options, *run); !ok) {
+    return report_error(ok.error().message);
+  }
+  const DrawingSummary s = summarize(*run);
+  print_ik_table_row(label.shape, label.solver, s);
+  char row[256];
+  std::snprintf(row, sizeof row, "%s,%s,%d,%.6f,%d,%.4f,%d,%.6e,%.6f,%.4f\n", label.shape.c_str(),
+                label.solver.c_str(), s.targets, s.converged_fraction, s.unreachable_targets,
+                s.iterations_mean, s.iterations_max, s.error_max, s.max_joint_step_rad,
+                s.solve_time_us_median);
+  csv += row;
+  return 0;
+}
+
+// Every lab shape with every solver, lab defaults, then custom drawings (initials, the uneven
+// spiral as sampled and evened out) with CCD; one folder of reports per drawing and a
 // summary.csv comparing them.
 int run_ik_shapes(const DemoArgs& args) {
   const auto chain = build_chain(lab_arm());
@@ -34,7 +62,7 @@ int run_ik_shapes(const DemoArgs& args) {
 
   std::printf(
       "The lab's arm draws its five shapes with both solvers (lab defaults: %d "
-      "iterations, tolerance %g, warm start).\n\n",
+      "iterations, tolerance %g, warm start), then custom drawings.\n\n",
       IkOptions{}.max_iterations, IkOptions{}.tolerance);
   PictureArgs picture_args;
   picture_args.no_picture = args.no_picture;
@@ -48,32 +76,43 @@ int run_ik_shapes(const DemoArgs& args) {
     for (IkSolverKind solver : all_ik_solvers()) {
       DrawingOptions options;
       options.solver = solver;
-      const Trajectory trajectory = Trajectory::all_pen_down(lab_shape_targets(shape));
-      const auto run = run_drawing(*chain, trajectory.targets, options);
-      if (!run) return report_error(run.error().message);
       const IkRunLabel label{std::string(to_string(shape)), std::string(to_string(solver)),
                              std::nullopt};
-      const std::filesystem::path dir = ik_dir / (label.shape + "-" + label.solver);
-      if (auto ok = ensure_output_directory(dir); !ok) return report_error(ok.error().message);
-      if (auto ok = render_ik_pictures(trajectory, *run, *pictures, dir); !ok) {
-        return report_error(ok.error().message);
-      }
-      const auto written = write_ik_reports(dir, label, options, *run);
-      if (!written) return report_error(written.error().message);
-      const DrawingSummary s = summarize(*run);
-      print_ik_table_row(label.shape, label.solver, s);
-      char row[256];
-      std::snprintf(row, sizeof row, "%s,%s,%d,%.6f,%d,%.4f,%d,%.6e,%.6f,%.4f\n",
-                    label.shape.c_str(), label.solver.c_str(), s.targets, s.converged_fraction,
-                    s.unreachable_targets, s.iterations_mean, s.iterations_max, s.error_max,
-                    s.max_joint_step_rad, s.solve_time_us_median);
-      csv += row;
+      const int code =
+          draw_into(*chain, ik_dir / (label.shape + "-" + label.solver), label,
+                    Trajectory::all_pen_down(lab_shape_targets(shape)), options, *pictures, csv);
+      if (code != 0) return code;
     }
+  }
+  struct Custom {
+    const char* folder;
+    DrawingSource source;
+    DrawingLayout layout;
+  };
+  DrawingSource text;
+  text.kind = DrawingSourceKind::text;
+  text.text = "QD";
+  DrawingSource spiral;
+  spiral.shape = "spiral";
+  const Custom customs[] = {{"text-QD-ccd", text, {}},
+                            {"spiral-ccd", spiral, {}},
+                            {"spiral-even-ccd", spiral, {.spacing = 0.01}}};
+  for (const Custom& custom : customs) {
+    auto drawing = prepare_drawing(custom.source, custom.layout, *chain);
+    if (!drawing) return report_error(drawing.error().message);
+    const Trajectory& t = drawing->trajectory;
+    const IkRunLabel label{
+        drawing->name + (custom.layout.spacing ? " even" : ""), "ccd",
+        DrawingStats{drawing->strokes,
+                     static_cast<int>(std::count(t.pen_down.begin(), t.pen_down.end(), 0)),
+                     drawing->spacing_before, drawing->spacing_after}};
+    const int code = draw_into(*chain, ik_dir / custom.folder, label, t, {}, *pictures, csv);
+    if (code != 0) return code;
   }
   if (auto ok = write_file_atomic(ik_dir / "summary.csv", csv); !ok) {
     return report_error(ok.error().message);
   }
-  std::printf("\nOutputs: %s/<shape>-<solver>/{metrics.json,path.csv,drawing.svg%s} and %s\n",
+  std::printf("\nOutputs: %s/<drawing>-<solver>/{metrics.json,path.csv,drawing.svg%s} and %s\n",
               ik_dir.string().c_str(), args.no_picture ? "" : ",drawing.png",
               (ik_dir / "summary.csv").string().c_str());
   return 0;

@@ -147,10 +147,17 @@ TEST(DemoCli, DrawsEveryShapeWithBothSolvers) {
       const auto metrics = nlohmann::json::parse(read_file(dir / "metrics.json"));
       EXPECT_EQ(metrics["converged_fraction"], 1.0) << dir;
       EXPECT_TRUE(fs::exists(dir / "drawing.svg"));
+      EXPECT_TRUE(fs::exists(dir / "drawing.png"));
     }
   }
-  EXPECT_EQ(count_lines(read_file(out / "ik" / "summary.csv")), 11);
-  for (const char* name : {"metrics.json", "cloth.obj", "cloth.pc2"}) {
+  // Then the custom drawings: initials, and the uneven spiral before and after resampling.
+  for (const char* custom : {"text-QD-ccd", "spiral-ccd", "spiral-even-ccd"}) {
+    const auto metrics = nlohmann::json::parse(read_file(out / "ik" / custom / "metrics.json"));
+    EXPECT_EQ(metrics["converged_fraction"], 1.0) << custom;
+    EXPECT_TRUE(metrics.contains("drawing")) << custom;
+  }
+  EXPECT_EQ(count_lines(read_file(out / "ik" / "summary.csv")), 14);
+  for (const char* name : {"metrics.json", "cloth.obj", "cloth.pc2", "final.png"}) {
     EXPECT_TRUE(fs::exists(out / "cloth" / name)) << name;
   }
 }
