@@ -30,8 +30,10 @@ Result<std::vector<Vec3>> builtin_shape(const std::string& name) {
   return fail("unknown shape '" + name + "' (expected one of: " + names + ")");
 }
 
-// The source's strokes in its own frame (y up), and a name for reports.
-Result<Strokes> read_strokes(const DrawingSource& source, std::string& name) {
+// The source's strokes in its own frame (y up), a name for reports and, for images, the
+// extent of the ink to fit.
+Result<Strokes> read_strokes(const DrawingSource& source, std::string& name,
+                             std::optional<Eigen::AlignedBox2d>& frame) {
   switch (source.kind) {
     case DrawingSourceKind::text:
       name = "text " + source.text;
@@ -49,6 +51,7 @@ Result<Strokes> read_strokes(const DrawingSource& source, std::string& name) {
       if (!image) return fail(image.error().message);
       auto strokes = image_to_strokes(*image, source.image);
       if (!strokes) return fail(source.file.string() + ": " + strokes.error().message);
+      frame = strokes->extent;
       return std::move(strokes->strokes);
     }
     case DrawingSourceKind::shape:
@@ -80,10 +83,12 @@ Result<PreparedDrawing> prepare_drawing(const DrawingSource& source, const Drawi
     out.name = source.shape;
     placed = {plane_stroke(*points)};
   } else {
-    auto strokes = read_strokes(source, out.name);
+    std::optional<Eigen::AlignedBox2d> frame;
+    auto strokes = read_strokes(source, out.name, frame);
     if (!strokes) return fail(strokes.error().message);
     auto fitted = fit_to_box(
-        *strokes, layout.box.value_or(reachable_box(chain.root_position(), chain.reach())));
+        *strokes, layout.box.value_or(reachable_box(chain.root_position(), chain.reach())),
+        frame);
     if (!fitted) return fail(fitted.error().message);
     placed = std::move(*fitted);
   }
@@ -95,7 +100,14 @@ Result<PreparedDrawing> prepare_drawing(const DrawingSource& source, const Drawi
     // Refuse before allocating: a tiny spacing on a long drawing would ask for billions.
     double length = 0.0;
     for (const Stroke& stroke : placed) length += stroke_length(stroke);
-    const double samples = length / *spacing + static_cast<double>(placed.size());
+    double travel = 0.0;  // pen-up moves between strokes, cut at the travel spacing
+    for (std::size_t i = 1; i < placed.size(); ++i) {
+      if (!placed[i].empty() && !placed[i - 1].empty()) {
+        travel += (placed[i].front() - placed[i - 1].back()).norm();
+      }
+    }
+    const double samples = length / *spacing + travel / layout.travel.spacing +
+                           3.0 * static_cast<double>(placed.size());
     if (samples > kMaxDrawingTargets) {
       return fail("spacing " + format_number(*spacing) + " would make about " +
                   format_number(samples) + " targets, more than the limit of " +

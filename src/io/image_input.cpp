@@ -49,15 +49,21 @@ Result<GrayImage> read_gray_image(const std::filesystem::path& path) {
                 std::to_string(height) + " pixels, larger than the limit of " +
                 std::to_string(kMaxImageSide) + "x" + std::to_string(kMaxImageSide));
   }
+  // Gray and alpha, so a drawing on a transparent background reads as ink on white paper
+  // (stb would otherwise drop the alpha and see transparent black everywhere).
   std::unique_ptr<stbi_uc, void (*)(void*)> data(
-      stbi_load(path.c_str(), &width, &height, &channels, 1), stbi_image_free);
+      stbi_load(path.c_str(), &width, &height, &channels, 2), stbi_image_free);
   if (!data) {
     const char* reason = stbi_failure_reason();
     return fail(name(path) + ": cannot decode the image (" + (reason ? reason : "unknown reason") +
                 ")");
   }
   GrayImage image(width, height);
-  std::copy_n(data.get(), image.pixels.size(), image.pixels.begin());
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    const int gray = data.get()[2 * i], alpha = data.get()[2 * i + 1];
+    // Composited over white: g' = 255 - a (255 - g) / 255, rounded.
+    image.pixels[i] = static_cast<std::uint8_t>(255 - (alpha * (255 - gray) + 127) / 255);
+  }
   return image;
 }
 

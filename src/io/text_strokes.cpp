@@ -17,24 +17,28 @@ namespace animkit {
 
 namespace {
 
-// Code points of UTF-8 text; nothing when the bytes are not valid UTF-8.
+// Code points of UTF-8 text; nothing when the bytes are not valid UTF-8 (RFC 3629: no
+// overlong forms, no surrogates, nothing above U+10FFFF).
 std::optional<std::vector<char32_t>> decode_utf8(std::string_view text) {
   std::vector<char32_t> out;
   for (std::size_t i = 0; i < text.size();) {
     const auto byte = static_cast<unsigned char>(text[i]);
     int extra = 0;
-    char32_t c = 0;
+    char32_t c = 0, smallest = 0;
     if (byte < 0x80) {
       c = byte;
-    } else if ((byte & 0xE0) == 0xC0) {
+    } else if (byte >= 0xC2 && byte <= 0xDF) {
       c = byte & 0x1F;
       extra = 1;
+      smallest = 0x80;
     } else if ((byte & 0xF0) == 0xE0) {
       c = byte & 0x0F;
       extra = 2;
-    } else if ((byte & 0xF8) == 0xF0) {
+      smallest = 0x800;
+    } else if (byte >= 0xF0 && byte <= 0xF4) {
       c = byte & 0x07;
       extra = 3;
+      smallest = 0x10000;
     } else {
       return std::nullopt;
     }
@@ -44,6 +48,7 @@ std::optional<std::vector<char32_t>> decode_utf8(std::string_view text) {
       if ((next & 0xC0) != 0x80) return std::nullopt;
       c = (c << 6) | (next & 0x3F);
     }
+    if (c < smallest || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) return std::nullopt;
     out.push_back(c);
     i += static_cast<std::size_t>(extra) + 1;
   }
@@ -193,7 +198,9 @@ Result<Strokes> text_strokes(std::string_view utf8, const TextOptions& options) 
       }
     }
     if (options.centerline) {
-      if (FT_Load_Glyph(face, glyph, FT_LOAD_RENDER)) {
+      // Rendered from the outline (never an embedded bitmap strike) as 8-bit coverage.
+      if (FT_Load_Glyph(face, glyph, FT_LOAD_RENDER | FT_LOAD_NO_BITMAP) ||
+          face->glyph->bitmap.pixel_mode != FT_PIXEL_MODE_GRAY || face->glyph->bitmap.pitch < 0) {
         return fail("font " + options.font.string() + ": cannot render " + code_point_name(c));
       }
       const FT_Bitmap& bitmap = face->glyph->bitmap;
@@ -205,7 +212,8 @@ Result<Strokes> text_strokes(std::string_view utf8, const TextOptions& options) 
         for (unsigned y = 0; y < bitmap.rows; ++y) {
           for (unsigned x = 0; x < bitmap.width; ++x) {
             canvas.at(static_cast<int>(x) + margin, static_cast<int>(y) + margin) =
-                static_cast<std::uint8_t>(255 - bitmap.buffer[y * bitmap.pitch + x]);
+                static_cast<std::uint8_t>(
+                    255 - bitmap.buffer[static_cast<long>(y) * bitmap.pitch + x]);
           }
         }
         ImageStrokeOptions image;
@@ -213,7 +221,11 @@ Result<Strokes> text_strokes(std::string_view utf8, const TextOptions& options) 
         image.polarity = InkPolarity::dark;
         image.speck_fraction = 0.0;
         auto skeleton = image_to_strokes(canvas, image);
-        if (skeleton) {
+        if (!skeleton) {
+          return fail("the centre line of " + code_point_name(c) + ": " +
+                      skeleton.error().message);
+        }
+        {
           // Pixels to font units: the canvas's top-left sits at the bitmap's origin.
           const double scale = em / kPixelsPerEm;
           const Point2 origin(pen_x + scale * (face->glyph->bitmap_left - margin),

@@ -39,9 +39,23 @@ std::optional<int> otsu_threshold(const GrayImage& image) {
 BinaryImage binarize(const GrayImage& image, int threshold, InkPolarity polarity) {
   BinaryImage out(image.width, image.height);
   if (polarity == InkPolarity::automatic) {
-    std::size_t dark = 0;
-    for (std::uint8_t v : image.pixels) dark += v <= threshold ? 1 : 0;
-    polarity = 2 * dark <= image.pixels.size() ? InkPolarity::dark : InkPolarity::light;
+    // Paper is what the border is mostly made of (a drawing rarely touches every edge); when
+    // the border is split evenly, the class with more pixels is paper.
+    std::size_t dark_border = 0, border = 0;
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x) {
+        if (y != 0 && y != image.height - 1 && x != 0 && x != image.width - 1) continue;
+        dark_border += image.at(x, y) <= threshold ? 1 : 0;
+        ++border;
+      }
+    }
+    bool dark_paper = 2 * dark_border > border;
+    if (2 * dark_border == border) {
+      std::size_t dark = 0;
+      for (std::uint8_t v : image.pixels) dark += v <= threshold ? 1 : 0;
+      dark_paper = 2 * dark > image.pixels.size();
+    }
+    polarity = dark_paper ? InkPolarity::light : InkPolarity::dark;
   }
   for (std::size_t i = 0; i < image.pixels.size(); ++i) {
     const bool low = image.pixels[i] <= threshold;
@@ -113,11 +127,12 @@ std::array<int, 8> neighbours(const BinaryImage& im, int x, int y) {
 }
 
 // Zhang & Suen, "A fast parallel algorithm for thinning digital patterns" (CACM 1984): a
-// pixel is deleted in sub-iteration `pass` when 2 <= B <= 6, A = 1 (one 0->1 transition
-// around it) and the pass's two directional products vanish.
+// pixel is deleted in sub-iteration `pass` when B <= 6, A = 1 (one 0->1 transition around it)
+// and the pass's two directional products vanish. The lower bound is Lu & Wang's (CACM 1986)
+// 3 <= B instead of 2 <= B: with 2, a two-pixel-wide 45-degree line is eaten from its ends.
 bool zhang_suen_deletes(const std::array<int, 8>& p, int pass) {
   const int b = std::accumulate(p.begin(), p.end(), 0);
-  if (b < 2 || b > 6) return false;
+  if (b < 3 || b > 6) return false;
   int a = 0;
   for (int i = 0; i < 8; ++i) a += (p[i] == 0 && p[(i + 1) % 8] == 1) ? 1 : 0;
   if (a != 1) return false;

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "animkit/core/validation.h"
-#include "animkit/trajectory/skeleton_strokes.h"
+#include "animkit/trajectory/stroke_cover.h"
 
 namespace animkit {
 
@@ -52,12 +52,23 @@ Result<ImageStrokes> image_to_strokes(const GrayImage& image, const ImageStrokeO
                 std::to_string(out.threshold) + " and removing specks");
   }
   const int ink_pixels = ink.count();
+  // The drawing's frame is the ink's extent, not the skeleton's: a dot stays a dot in a frame
+  // as big as the ink, instead of a point blown up to the whole box.
+  for (int y = 0; y < ink.height; ++y) {
+    for (int x = 0; x < ink.width; ++x) {
+      if (ink.get(x, y)) {
+        out.extent.extend(Point2(x - 0.5, -(y - 0.5)));
+        out.extent.extend(Point2(x + 0.5, -(y + 0.5)));
+      }
+    }
+  }
   thin(ink, options.thinning);
   SkeletonGraph graph = skeleton_graph(ink);
-  // Ink per skeleton pixel is about the pen's width; a branch shorter than 1.5 widths is a
-  // thinning artefact at a corner, not a stroke.
+  // Ink per skeleton pixel is about the pen's width. Thinning grows a spur at a corner about
+  // half a width long (from the skeleton out to the corner of the ink); a branch up to 0.75
+  // widths is taken for one, anything longer is a stroke.
   const double pen_width = static_cast<double>(ink_pixels) / std::max(1, ink.count());
-  out.spurs_removed = prune_spurs(graph, 1.5 * pen_width);
+  out.spurs_removed = prune_spurs(graph, 0.75 * pen_width);
   Strokes strokes = cover_with_strokes(graph);
   for (Stroke& s : strokes) {
     // Smooth in pixels, corners held (a "7" keeps its corner; judged over 3 pixels, so the

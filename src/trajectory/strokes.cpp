@@ -11,6 +11,9 @@ namespace animkit {
 
 namespace {
 
+// Most points one piece between corners is cut into (see resample()).
+constexpr double kMaxPiecePoints = 1e7;
+
 // The stroke without consecutive duplicates (zero-length segments have no direction).
 Stroke distinct_points(const Stroke& stroke) {
   Stroke out;
@@ -37,7 +40,9 @@ void resample_piece(const Stroke& s, std::size_t first, std::size_t last, double
                     Stroke& out) {
   double length = 0.0;
   for (std::size_t i = first; i < last; ++i) length += (s[i + 1] - s[i]).norm();
-  const int parts = std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9)));
+  // Counted in double and capped before the cast: a tiny spacing must not overflow an int.
+  const double wanted = std::ceil(length / spacing - 1e-9);
+  const int parts = static_cast<int>(std::clamp(wanted, 1.0, kMaxPiecePoints));
   const double step = length / parts;
   std::size_t i = first;
   double walked = 0.0;  // arc length at s[i]
@@ -126,25 +131,40 @@ std::vector<std::size_t> find_corners(const Stroke& stroke, double corner_angle,
     const auto back = reach(i, -1), ahead = reach(i, +1);
     if (back && ahead) angle[i] = std::abs(turn(stroke[*back], stroke[i], stroke[*ahead]));
   }
-  // One corner per bend: the sharpest point among neighbours within `scale` that all turn.
+  // Corners of each bend, a bend being a run of consecutive points that turn at this scale:
+  // its sharp vertices (turning by more than the angle between their own neighbours too: a
+  // polygon's corners, however close together), or else, for a rounded bend, its sharpest
+  // point.
+  const auto local_turn = [&](std::size_t i) {
+    const auto back = step(i, -1), ahead = step(i, +1);
+    return back && ahead ? std::abs(turn(stroke[*back], stroke[i], stroke[*ahead])) : 0.0;
+  };
+  std::vector<char> done(ring, 0);
   for (std::size_t i = 0; i < ring; ++i) {
-    if (angle[i] <= corner_angle) continue;
-    bool sharpest = true;
-    for (int direction : {-1, +1}) {
-      std::size_t j = i;
-      double walked = 0.0;
-      for (std::size_t k = 0; k + 1 < ring && sharpest; ++k) {
-        const auto next = step(j, direction);
-        if (!next) break;
-        walked += (stroke[*next] - stroke[j]).norm();
-        j = *next;
-        if (walked > scale) break;
-        // Ties go to the earlier point so a symmetric bend keeps exactly one corner.
-        if (angle[j] > angle[i] || (angle[j] == angle[i] && j < i)) sharpest = false;
-      }
+    if (angle[i] <= corner_angle || done[i]) continue;
+    // Walk back to the start of the run (a closed stroke may wrap), then forward through it.
+    std::size_t first = i;
+    for (std::size_t k = 0; k + 1 < ring; ++k) {
+      const auto previous = step(first, -1);
+      if (!previous || angle[*previous] <= corner_angle || *previous == i) break;
+      first = *previous;
     }
-    if (sharpest) corners.push_back(i);
+    std::size_t sharpest = first;
+    bool any_vertex = false;
+    for (std::size_t j = first, k = 0; k < ring; ++k) {
+      done[j] = 1;
+      if (angle[j] > angle[sharpest]) sharpest = j;
+      if (local_turn(j) > corner_angle) {
+        corners.push_back(j);
+        any_vertex = true;
+      }
+      const auto next = step(j, +1);
+      if (!next || angle[*next] <= corner_angle || done[*next]) break;
+      j = *next;
+    }
+    if (!any_vertex) corners.push_back(sharpest);
   }
+  std::sort(corners.begin(), corners.end());
   return corners;
 }
 

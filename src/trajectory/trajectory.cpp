@@ -7,6 +7,10 @@
 
 namespace animkit {
 
+namespace {
+constexpr double kMaxTravelPoints = 1e6;  // per pen-up move
+}  // namespace
+
 Trajectory Trajectory::all_pen_down(std::vector<Vec3> points) {
   Trajectory t;
   t.pen_down.assign(points.size(), 1);
@@ -14,7 +18,8 @@ Trajectory Trajectory::all_pen_down(std::vector<Vec3> points) {
   return t;
 }
 
-Result<Strokes> fit_to_box(const Strokes& strokes, const DrawingBox& box) {
+Result<Strokes> fit_to_box(const Strokes& strokes, const DrawingBox& box,
+                           const std::optional<Eigen::AlignedBox2d>& frame) {
   if (!std::isfinite(box.half_extent) || box.half_extent <= 0.0 || !std::isfinite(box.center_x) ||
       !std::isfinite(box.center_z)) {
     return fail("the drawing box must have a finite centre and a positive half extent, got " +
@@ -32,7 +37,9 @@ Result<Strokes> fit_to_box(const Strokes& strokes, const DrawingBox& box) {
     }
   }
   if (bounds.isEmpty()) return fail("the drawing has no points");
+  if (frame && !frame->isEmpty()) bounds = *frame;
   const double size = bounds.sizes().maxCoeff();
+  if (!std::isfinite(size)) return fail("the drawing is too large to place (its size overflows)");
   // A single point (or all points equal) stays a point at the centre.
   const double scale = size > 0.0 ? 2.0 * box.half_extent / size : 0.0;
   const Point2 centre = bounds.center();
@@ -73,9 +80,16 @@ Result<Trajectory> to_trajectory(const Strokes& plane_strokes, const TravelOptio
     t.targets.push_back(p);
     t.pen_down.push_back(down ? 1 : 0);
   };
-  // Evenly spaced points from a to b, both excluded.
+  // Evenly spaced points from a to b, both excluded. Counted in double before the cast, so a
+  // move across a huge box is refused rather than overflowing.
+  bool too_long = false;
   const auto move = [&](const Vec3& a, const Vec3& b) {
-    const int parts = std::max(1, static_cast<int>(std::ceil((b - a).norm() / travel.spacing)));
+    const double wanted = std::ceil((b - a).norm() / travel.spacing);
+    if (!(wanted <= kMaxTravelPoints)) {
+      too_long = true;
+      return;
+    }
+    const int parts = std::max(1, static_cast<int>(wanted));
     for (int k = 1; k < parts; ++k) add(a + (b - a) * (static_cast<double>(k) / parts), false);
   };
   const Vec3 lift(0.0, travel.pen_lift, 0.0);
@@ -93,6 +107,10 @@ Result<Trajectory> to_trajectory(const Strokes& plane_strokes, const TravelOptio
     for (const Point2& p : stroke) add(Vec3(p.x(), 0.0, p.y()), true);
     last = t.targets.back();
     first = false;
+  }
+  if (too_long) {
+    return fail("a pen-up move is longer than " + format_number(kMaxTravelPoints) +
+                " travel spacings");
   }
   if (t.targets.empty()) return fail("the drawing has no points");
   return t;

@@ -129,11 +129,12 @@ TEST(PrepareDrawing, BadRequestsAreClearErrors) {
   EXPECT_EQ(prepare_drawing(source, {}, arm()).error().message,
             "/nonexistent/seven.png: no such file");
   const auto dir = fresh_dir("drawing_white");
+  // Fully transparent pixels are paper: composited over white.
   ASSERT_TRUE(write_png(dir / "white.png", Image(20, 20)).has_value());  // all (0,0,0,0)
   source.file = dir / "white.png";
   EXPECT_EQ(
       prepare_drawing(source, {}, arm()).error().message,
-      (dir / "white.png").string() + ": the image is a single shade (gray 0): nothing to draw");
+      (dir / "white.png").string() + ": the image is a single shade (gray 255): nothing to draw");
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "animkit/trajectory/skeleton_strokes.h"
+#include "animkit/trajectory/stroke_cover.h"
 #include "glyph_images.h"
 
 namespace animkit {

@@ -30,7 +30,7 @@ struct BinaryImage {
 std::optional<int> otsu_threshold(const GrayImage& image);
 
 enum class InkPolarity {
-  automatic,  ///< the class with fewer pixels is the ink (drawings are mostly paper)
+  automatic,  ///< the class most of the border has is paper (ties: the larger class)
   dark,       ///< pixels <= threshold are ink (pen on paper)
   light,      ///< pixels > threshold are ink (MNIST: white digit on black)
 };
@@ -54,7 +54,9 @@ std::string_view to_string(ThinningMethod method);
 std::optional<ThinningMethod> parse_thinning(std::string_view name);
 
 /// Thins the ink to a skeleton one pixel wide that keeps the shape's 8-connectivity (holes
-/// stay holes, pieces stay pieces). Afterwards no 2x2 block is all ink.
+/// stay holes, pieces stay pieces). Zhang-Suen has Lu & Wang's correction for diagonal lines.
+/// A 2x2 block of ink is left only where removing any of its pixels would cut the skeleton
+/// (at some crossings).
 void thin(BinaryImage& image, ThinningMethod method);
 
 }  // namespace animkit

@@ -2,6 +2,7 @@
 // An image's skeleton as pen strokes (the lab's bonus task): grayscale -> threshold (Otsu by
 // default) -> speck removal -> thinning -> skeleton graph -> strokes covering every edge ->
 // smoothing. Resampling and placement on the plane come after (trajectory.h).
+#include <Eigen/Geometry>
 #include <optional>
 
 #include "animkit/core/result.h"
@@ -28,7 +29,9 @@ struct ImageStrokeOptions {
 };
 
 struct ImageStrokes {
-  Strokes strokes;    ///< drawing coordinates: x right, y up, one unit per pixel
+  Strokes strokes;  ///< drawing coordinates: x right, y up, one unit per pixel
+  /// The ink's extent in the same coordinates: the frame to fit when placing the drawing.
+  Eigen::AlignedBox2d extent;
   int threshold = 0;  ///< the gray level used
   int specks_removed = 0;
   int spurs_removed = 0;  ///< short skeleton branches dropped (see prune_spurs)

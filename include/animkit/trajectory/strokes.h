@@ -38,9 +38,9 @@ struct ResampleOptions {
 };
 
 /// Resamples a stroke by arc length: corners (found at the scale of `spacing`) and both ends
-/// are kept, and each piece between them is cut into equal parts no longer than `spacing` (so spacing varies only where a
-/// piece is shorter than a whole number of spacings). Duplicate points are dropped first; a
-/// stroke of fewer than 2 distinct points comes back as its first point.
+/// are kept, and each piece between them is cut into equal parts no longer than `spacing` (so
+/// spacing varies only where a piece is shorter than a whole number of spacings). Duplicate points
+/// are dropped first; a stroke of fewer than 2 distinct points comes back as its first point.
 Stroke resample(const Stroke& stroke, const ResampleOptions& options);
 Strokes resample(const Strokes& strokes, const ResampleOptions& options);
 

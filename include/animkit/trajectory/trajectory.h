@@ -1,6 +1,7 @@
 #pragma once
 // From a drawing to the arm's targets: the strokes are scaled and placed on the plane y = 0,
 // and joined by pen-up travel, so the arm moves between strokes without drawing.
+#include <Eigen/Geometry>
 #include <optional>
 #include <vector>
 
@@ -26,9 +27,11 @@ struct DrawingBox {
 
 /// Scales the strokes uniformly (keeping proportions) and centres them in `box`; the
 /// drawing's u runs along +x and its v (up in the picture) along -z, so a camera looking from
-/// +z down at the plane sees the drawing upright. Returns plane coordinates (x, z).
-/// Errors: no points at all, a non-finite point, a bad box.
-Result<Strokes> fit_to_box(const Strokes& strokes, const DrawingBox& box);
+/// +z down at the plane sees the drawing upright. `frame` is the drawing's extent to fit
+/// (default: the strokes' bounds; an image passes its ink's). Returns plane coordinates
+/// (x, z). Errors: no points at all, a non-finite point or extent, a bad box.
+Result<Strokes> fit_to_box(const Strokes& strokes, const DrawingBox& box,
+                           const std::optional<Eigen::AlignedBox2d>& frame = std::nullopt);
 
 /// The largest box the lab-style arm reaches comfortably: centred under the root, its corners
 /// at `fill` (0..1] of the radius where the plane y = plane_y leaves the arm's reach.
