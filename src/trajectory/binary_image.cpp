@@ -39,8 +39,9 @@ std::optional<int> otsu_threshold(const GrayImage& image) {
 BinaryImage binarize(const GrayImage& image, int threshold, InkPolarity polarity) {
   BinaryImage out(image.width, image.height);
   if (polarity == InkPolarity::automatic) {
-    // Paper is what the border is mostly made of (a drawing rarely touches every edge); when
-    // the border is split evenly, the class with more pixels is paper.
+    // Paper is what the border is mostly made of (a drawing rarely touches every edge). A
+    // tie, or an image that is all border (one or two pixels wide), says nothing: then ink is
+    // dark, as a pen on paper.
     std::size_t dark_border = 0, border = 0;
     for (int y = 0; y < image.height; ++y) {
       for (int x = 0; x < image.width; ++x) {
@@ -49,12 +50,7 @@ BinaryImage binarize(const GrayImage& image, int threshold, InkPolarity polarity
         ++border;
       }
     }
-    bool dark_paper = 2 * dark_border > border;
-    if (2 * dark_border == border) {
-      std::size_t dark = 0;
-      for (std::uint8_t v : image.pixels) dark += v <= threshold ? 1 : 0;
-      dark_paper = 2 * dark > image.pixels.size();
-    }
+    const bool dark_paper = 2 * dark_border > border && border < image.pixels.size();
     polarity = dark_paper ? InkPolarity::light : InkPolarity::dark;
   }
   for (std::size_t i = 0; i < image.pixels.size(); ++i) {

@@ -81,6 +81,19 @@ TEST(ReadGrayImage, BadFilesAreClearErrors) {
             (dir / "folder.png").string() + ": is a folder, not a file");
 }
 
+TEST(ReadGrayImage, TransparentPaperIsWhite) {
+  const auto dir = fresh_dir("gray_alpha");
+  Image image(16, 16);                                           // transparent everywhere ...
+  for (int x = 2; x < 14; ++x) image.at(x, 8) = {0, 0, 0, 255};  // ... but an opaque black line
+  image.at(1, 1) = {0, 0, 0, 128};                               // half-covered ink
+  ASSERT_TRUE(write_png(dir / "line.png", image).has_value());
+  const auto gray = read_gray_image(dir / "line.png");
+  ASSERT_TRUE(gray.has_value());
+  EXPECT_EQ(gray->at(0, 0), 255);
+  EXPECT_EQ(gray->at(5, 8), 0);
+  EXPECT_EQ(gray->at(1, 1), 127);
+}
+
 TEST(ReadMnist, ReadsTheImageAtTheIndex) {
   const auto dir = fresh_dir("mnist");
   write_bytes(dir / "images.idx", mnist_bytes(0x00000803u, 3));
@@ -164,6 +177,13 @@ TEST(TextStrokes, FlatteningFollowsTheTolerance) {
   EXPECT_LT(coarse->front().size() * 3, fine->front().size());
 }
 
+TEST(TextStrokes, ABoldTKeepsItsBarAsACentreLine) {
+  const auto strokes = text_strokes(
+      "T", {.font = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf", .centerline = true});
+  ASSERT_TRUE(strokes.has_value()) << strokes.error().message;
+  EXPECT_EQ(strokes->size(), 2u);  // three ends at one junction: two strokes
+}
+
 TEST(TextStrokes, CentreLinesAreSingleStrokes) {
   const auto strokes = text_strokes("L", {.centerline = true});
   ASSERT_TRUE(strokes.has_value()) << strokes.error().message;
@@ -174,7 +194,12 @@ TEST(TextStrokes, CentreLinesAreSingleStrokes) {
 TEST(TextStrokes, BadTextAndFontsAreClearErrors) {
   EXPECT_EQ(text_strokes("").error().message, "the text is empty");
   EXPECT_EQ(text_strokes("   ").error().message, "the text has no visible glyphs");
-  EXPECT_EQ(text_strokes("\xff").error().message, "the text is not valid UTF-8");
+  for (const char* bad : {"\xff", "\xc0\x8a",
+                          "Q\xc0\xaf"
+                          "D",
+                          "\xed\xa0\x80", "\xf5\x80\x80\x80", "\xe4\xb8"}) {
+    EXPECT_EQ(text_strokes(bad).error().message, "the text is not valid UTF-8") << bad;
+  }
   EXPECT_EQ(text_strokes("A", {.font = "/nonexistent/font.ttf"}).error().message,
             "font /nonexistent/font.ttf: no such file");
   const auto dir = fresh_dir("font_bad");

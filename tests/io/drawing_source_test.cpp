@@ -124,6 +124,14 @@ TEST(PrepareDrawing, BadRequestsAreClearErrors) {
             "spacing must be a positive finite number, got -1");
   EXPECT_EQ(prepare_drawing(source, {.spacing = 1e-9}, arm()).error().message,
             "spacing 1e-09 would make about 3.7445e+09 targets, more than the limit of 1e+06");
+  DrawingSource text;
+  text.kind = DrawingSourceKind::text;
+  text.text = "QD";
+  // A box a million units wide: millions of samples and pen-up steps, refused up front.
+  const auto far = prepare_drawing(text, {.box = DrawingBox{0.0, 0.0, 1e6}}, arm());
+  ASSERT_FALSE(far.has_value());
+  EXPECT_EQ(far.error().message.rfind("spacing 0.01 would make about ", 0), 0u)
+      << far.error().message;
   source.kind = DrawingSourceKind::image;
   source.file = "/nonexistent/seven.png";
   EXPECT_EQ(prepare_drawing(source, {}, arm()).error().message,

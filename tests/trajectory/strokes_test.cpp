@@ -49,6 +49,20 @@ TEST(Resample, KeepsCorners) {
   EXPECT_EQ(find_corners(square, 0.5).size(), 4u);  // the start of a closed stroke included
 }
 
+TEST(Resample, KeepsCornersCloserThanTheSpacing) {
+  Stroke wave;  // a square wave of steps 0.2, resampled at 0.3
+  for (int i = 0; i < 10; ++i) {
+    wave.emplace_back(0.2 * i, (i % 2) * 0.2);
+    wave.emplace_back(0.2 * (i + 1), (i % 2) * 0.2);
+  }
+  const Stroke even = resample(wave, {.spacing = 0.3});
+  for (std::size_t i = 1; i + 1 < wave.size(); ++i) {
+    bool kept = false;
+    for (const Point2& p : even) kept = kept || (p - wave[i]).norm() < 1e-12;
+    EXPECT_TRUE(kept) << "corner " << i;
+  }
+}
+
 TEST(Resample, DegenerateStrokesStayPoints) {
   EXPECT_EQ(resample(Stroke{{1, 2}, {1, 2}, {1, 2}}, {}).size(), 1u);
   EXPECT_TRUE(resample(Stroke{}, {}).empty());

@@ -30,7 +30,7 @@ struct BinaryImage {
 std::optional<int> otsu_threshold(const GrayImage& image);
 
 enum class InkPolarity {
-  automatic,  ///< the class most of the border has is paper (ties: the larger class)
+  automatic,  ///< the class most of the border has is paper (ties, all-border images: dark ink)
   dark,       ///< pixels <= threshold are ink (pen on paper)
   light,      ///< pixels > threshold are ink (MNIST: white digit on black)
 };

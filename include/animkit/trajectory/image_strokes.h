@@ -15,7 +15,7 @@ namespace animkit {
 constexpr int kMaxImageSide = 4096;
 
 struct ImageStrokeOptions {
-  std::optional<int> threshold;  ///< gray level 0..254 splitting ink and paper; nothing = Otsu
+  std::optional<int> threshold = std::nullopt;  ///< gray level 0..254 splitting ink and paper; nothing = Otsu
   InkPolarity polarity = InkPolarity::automatic;
   ThinningMethod thinning = ThinningMethod::zhang_suen;
   /// Ink pieces smaller than this fraction of the largest piece (and any under 4 pixels) are
