@@ -104,6 +104,11 @@ int run(const IkArgs& args) {
     if (d.text || !d.image.empty() || !d.mnist.empty() || !d.curve.empty()) {
       return report_error("--target excludes --text, --image, --mnist and --curve");
     }
+    if (d.spacing || !d.box.empty() || d.threshold || d.thinning) {
+      return report_error(
+          "--target is one point: --spacing, --box, --threshold and --thinning "
+          "do not apply");
+    }
     Vec3 target;
     if (!parse_vec3(args.target, target)) {
       return report_error("--target must be three finite numbers X,Y,Z, got '" + args.target + "'");
@@ -115,6 +120,10 @@ int run(const IkArgs& args) {
   if (!pictures) return report_error(pictures.error().message);
   const auto run = run_drawing(*chain, trajectory.targets, options, trajectory.pen_down);
   if (!run) return report_error(run.error().message);
+  if (args.picture_frame && *args.picture_frame >= static_cast<int>(run->frames.size())) {
+    return report_error("--picture-frame " + std::to_string(*args.picture_frame) +
+                        " is past the last frame (" + std::to_string(run->frames.size() - 1) + ")");
+  }
   if (!args.out.empty()) {
     if (auto ok = ensure_output_directory(args.out); !ok) return report_error(ok.error().message);
   }

@@ -73,12 +73,19 @@ Result<std::pair<DrawingSource, DrawingLayout>> drawing_request(const DrawingArg
   }
   if (!args.font.empty()) source.text_options.font = args.font;
   source.text_options.centerline = args.centerline;
-  const auto thinning = parse_thinning(args.thinning);
-  if (!thinning) {
-    return fail("unknown --thinning '" + args.thinning + "' (expected zhang-suen or guo-hall)");
+  const bool image = !args.image.empty() || !args.mnist.empty();
+  if ((args.threshold || args.thinning) && !image) {
+    return fail(std::string(args.threshold ? "--threshold" : "--thinning") +
+                " applies to --image and --mnist only");
   }
-  source.image.thinning = *thinning;
-  if (args.threshold != -1) source.image.threshold = args.threshold;
+  if (args.thinning) {
+    const auto thinning = parse_thinning(*args.thinning);
+    if (!thinning) {
+      return fail("unknown --thinning '" + *args.thinning + "' (expected zhang-suen or guo-hall)");
+    }
+    source.image.thinning = *thinning;
+  }
+  source.image.threshold = args.threshold;
   if (auto error = source.image.validate()) return fail(error->message);
   layout.spacing = args.spacing;
   if (!args.box.empty()) {

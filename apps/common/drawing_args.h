@@ -16,17 +16,17 @@ struct DrawingArgs {
   std::string font, image, mnist, curve;
   int index = 0;
   bool centerline = false;
-  int threshold = -1;  // -1: Otsu
-  std::string thinning = "zhang-suen";
-  std::optional<double> spacing;  // nothing: the source's default
-  std::string box;       // "X,Z,HALF"; empty: in the arm's reach
+  std::optional<int> threshold;         // nothing: Otsu
+  std::optional<std::string> thinning;  // nothing: zhang-suen
+  std::optional<double> spacing;        // nothing: the source's default
+  std::string box;                      // "X,Z,HALF"; empty: in the arm's reach
 };
 
 /// Adds the options to `command`; returns the --shape option (for excludes).
 CLI::Option* add_drawing_options(CLI::App& command, DrawingArgs& args);
 
 /// The source and layout the options ask for. Errors: bad --thinning, --threshold, --box,
-/// --spacing values.
+/// --spacing values; --threshold or --thinning without an image to apply them to.
 Result<std::pair<DrawingSource, DrawingLayout>> drawing_request(const DrawingArgs& args);
 
 }  // namespace animkit::apps

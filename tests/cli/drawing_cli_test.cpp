@@ -191,7 +191,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadDrawing{"--text QD --box 0,0,-1", "--box must be X,Z,HALF with HALF > 0, got '0,0,-1'"},
         BadDrawing{"--shape spiral --spacing 0", "spacing must be a positive finite number, got 0"},
         BadDrawing{"--index 3", "--index requires --mnist"},
-        BadDrawing{"--target 1,0,0 --text QD", "--target excludes --text"}),
+        BadDrawing{"--target 1,0,0 --text QD", "--target excludes --text"},
+        BadDrawing{"--target 1,0,0 --spacing 0.1", "--target is one point"},
+        BadDrawing{"--text QD --threshold 100", "--threshold applies to --image and --mnist only"},
+        BadDrawing{"--shape star --thinning guo-hall",
+                   "--thinning applies to --image and --mnist only"},
+        BadDrawing{"--shape star --picture-frame 400",
+                   "--picture-frame 400 is past the last frame (399)"}),
     [](const auto& param_info) { return "case" + std::to_string(param_info.index); });
 
 #ifdef ANIMKIT_VIEWER_PATH
