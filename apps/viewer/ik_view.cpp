@@ -80,7 +80,7 @@ void IkView::drawing_panel() {
   }
   bool even = layout_.spacing.has_value();
   float spacing = static_cast<float>(layout_.spacing.value_or(0.01));
-  bool changed = ImGui::Checkbox("Even spacing", &even);
+  bool changed = ImGui::Checkbox("Set spacing", &even);
   ImGui::SameLine();
   changed |= ImGui::SliderFloat("##spacing", &spacing, 0.002f, 0.05f, "%.3f",
                                 ImGuiSliderFlags_Logarithmic);
