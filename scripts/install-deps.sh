@@ -11,7 +11,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # Pictures and the viewer: OpenGL through glvnd, Mesa's software renderer (llvmpipe) for EGL
   # without a display and GLX in a window, GLFW and Dear ImGui.
-  libgl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0 libglfw3-dev libimgui-dev
+  libgl-dev libopengl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0 libglfw3-dev
+  libimgui-dev
   # Videos (--video) and the viewer's window test under a virtual display.
   ffmpeg xvfb xauth
 )
