@@ -46,27 +46,31 @@ void main() {
   color = vec4(base.rgb * (0.32 + diffuse) + vec3(specular), base.a);
 })"};
 
+/// Vertex stage of lines and markers: a world position, a colour and an on-screen size in
+/// pixels (a line's width, a marker's diameter) handed to the geometry stage.
+inline constexpr const char* kScreenSizedVertex = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec4 color;
+layout(location = 2) in float size;
+uniform mat4 view_projection;
+out vec4 v_color;
+out float v_size;
+void main() {
+  v_color = color;
+  v_size = size;
+  gl_Position = view_projection * vec4(position, 1.0);
+})";
+
 /// Lines widened into screen-space quads by a geometry shader: core profiles do not promise
 /// glLineWidth above 1. Square caps half a width long close the gaps between polyline joints.
 inline constexpr ShaderSources line{
-    R"(#version 330 core
-layout(location = 0) in vec3 position;
-layout(location = 1) in vec4 color;
-layout(location = 2) in float width;
-uniform mat4 view_projection;
-out vec4 v_color;
-out float v_width;
-void main() {
-  v_color = color;
-  v_width = width;
-  gl_Position = view_projection * vec4(position, 1.0);
-})",
+    kScreenSizedVertex,
     R"(#version 330 core
 layout(lines) in;
 layout(triangle_strip, max_vertices = 4) out;
 uniform vec2 viewport;
 in vec4 v_color[];
-in float v_width[];
+in float v_size[];
 out vec4 g_color;
 out float g_across;
 void main() {
@@ -83,8 +87,8 @@ void main() {
   float len = length(d);
   vec2 along = len > 1e-6 ? d / len : vec2(1.0, 0.0);
   vec2 across = vec2(-along.y, along.x);
-  float w = 0.5 * v_width[0] + 0.5;  // half a pixel more for the anti-aliased edge
-  vec2 cap = along * 0.5 * v_width[0] / half_viewport;
+  float w = 0.5 * v_size[0] + 0.5;  // half a pixel more for the anti-aliased edge
+  vec2 cap = along * 0.5 * v_size[0] / half_viewport;
   vec2 side = across * w / half_viewport;
   g_color = v_color[0];
   g_across = -1.0; gl_Position = vec4(a.xy + (-cap - side) * a.w, a.zw); EmitVertex();
@@ -105,18 +109,7 @@ void main() {
 
 /// Round markers: each point becomes a screen-aligned square, cut to a disc with a darker rim.
 inline constexpr ShaderSources point{
-    R"(#version 330 core
-layout(location = 0) in vec3 position;
-layout(location = 1) in vec4 color;
-layout(location = 2) in float size;
-uniform mat4 view_projection;
-out vec4 v_color;
-out float v_size;
-void main() {
-  v_color = color;
-  v_size = size;
-  gl_Position = view_projection * vec4(position, 1.0);
-})",
+    kScreenSizedVertex,
     R"(#version 330 core
 layout(points) in;
 layout(triangle_strip, max_vertices = 4) out;
