@@ -5,10 +5,15 @@
 #include <cstdlib>
 #include <string>
 
+#include "animkit/core/quote.h"
+
 namespace animkit::cli {
 
 int report_error(std::string_view message) {
-  std::fprintf(stderr, "animkit: error: %.*s\n", static_cast<int>(message.size()), message.data());
+  // Messages may carry user input (a file name, a line of a file, a library's own text):
+  // printed made safe, so the error stays one readable line whatever the input held.
+  const std::string safe = sanitize_message(message);
+  std::fprintf(stderr, "animkit: error: %s\n", safe.c_str());
   return kExitBadInput;
 }
 

@@ -1,0 +1,46 @@
+#include "animkit/core/quote.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace animkit {
+namespace {
+
+TEST(QuoteInput, PlainTextIsQuotedAsItIs) {
+  EXPECT_EQ(quote_input("circle"), "'circle'");
+  EXPECT_EQ(quote_input(""), "''");
+}
+
+TEST(QuoteInput, TerminalEscapesAndControlBytesAreShownNotSent) {
+  EXPECT_EQ(quote_input("a\x1b[2Jb"), "'a\\x1b[2Jb'");
+  EXPECT_EQ(quote_input("x\ny\tz\r"), "'x\\ny\\tz\\r'");
+  EXPECT_EQ(quote_input(std::string("a\0b", 3)), "'a\\x00b'");
+  EXPECT_EQ(quote_input("\x7f"), "'\\x7f'");
+  // U+009B (CSI as a C1 control) is well-formed UTF-8 but escaped all the same.
+  EXPECT_EQ(quote_input("\xc2\x9b"), "'\\u009b'");
+}
+
+TEST(QuoteInput, WellFormedUtf8IsKeptBrokenUtf8IsEscaped) {
+  EXPECT_EQ(quote_input("Zoë 中"), "'Zoë 中'");
+  EXPECT_EQ(quote_input("\xff\xfe"), "'\\xff\\xfe'");
+  EXPECT_EQ(quote_input("\xc0\xaf"), "'\\xc0\\xaf'");      // overlong '/'
+  EXPECT_EQ(quote_input("\xed\xa0\x80"), "'\\xed\\xa0\\x80'");  // a surrogate
+  EXPECT_EQ(quote_input("\xe4\xb8"), "'\\xe4\\xb8'");      // cut short
+}
+
+TEST(QuoteInput, LongInputIsCutWithItsSize) {
+  const std::string line(10'000'000, 'a');
+  const std::string quoted = quote_input(line);
+  EXPECT_EQ(quoted, "'" + std::string(kQuotedInputChars, 'a') + "...' (10000000 bytes)");
+  EXPECT_EQ(quote_input("abcdef", 3), "'abc...' (6 bytes)");
+  EXPECT_EQ(quote_input("abc", 3), "'abc'");
+}
+
+TEST(SanitizeMessage, KeepsTextEscapesControlsAndCuts) {
+  EXPECT_EQ(sanitize_message("bad value\x1b]0;pwned\x07"), "bad value\\x1b]0;pwned\\x07");
+  EXPECT_EQ(sanitize_message("abcdef", 4), "abcd... (cut)");
+}
+
+}  // namespace
+}  // namespace animkit
