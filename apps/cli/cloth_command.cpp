@@ -13,12 +13,15 @@
 #include "animkit/cloth/cloth_run.h"
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
+#include "animkit/cloth/parameter_ranges.h"
 #include "animkit/core/validation.h"
 #include "animkit/io/atomic_write.h"
 #include "animkit/io/cloth_report.h"
 #include "animkit/io/point_cache.h"
 #include "animkit/scene/cloth_scene.h"
+#include "animkit/core/quote.h"
 #include "cli_errors.h"
+#include "run_output.h"
 
 namespace animkit::cli {
 
@@ -57,11 +60,11 @@ class ProgressLine {
 
 }  // namespace
 
-int run_cloth(const ClothArgs& args) {
+int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out,
+                 const std::string& video, const std::function<Result<void>()>& commit) {
   if (auto error = args.grid.validate()) return report_error(error->message);
-  if (!std::isfinite(args.dt) || args.dt <= 0.0) {
-    return report_error("--dt must be a positive finite number of seconds, got " +
-                        format_number(args.dt));
+  if (!kTimeStepRange.contains(args.dt)) {
+    return report_error(kTimeStepRange.refusal("--dt (seconds)", args.dt));
   }
   if (args.frames < 1 || args.frames > kMaxFrames) {
     return report_error("--frames must be between 1 and " + std::to_string(kMaxFrames) + ", got " +
@@ -69,8 +72,8 @@ int run_cloth(const ClothArgs& args) {
   }
   const auto integrator = parse_integrator(args.integrator);
   if (!integrator) {
-    return report_error("unknown integrator '" + args.integrator +
-                        "' (expected one of: " + integrator_names() + ")");
+    return report_error("unknown integrator " + quote_input(args.integrator) +
+                        " (expected one of: " + integrator_names() + ")");
   }
   SimulationOptions options;
   options.integrator = *integrator;
@@ -80,7 +83,9 @@ int run_cloth(const ClothArgs& args) {
   if (!sim) return report_error(sim.error().message);
 
   // Opened before the run, so a missing OpenGL or ffmpeg stops it before any file is written.
-  auto pictures = PictureOutput::open(args.pictures, !args.out.empty(), 1.0 / args.dt);
+  PictureArgs picture_args = args.pictures;
+  picture_args.video = video;
+  auto pictures = PictureOutput::open(picture_args, !out.empty(), 1.0 / args.dt);
   if (!pictures) return report_error(pictures.error().message);
   // One camera for the whole run: the sheet flat and hanging straight down both fit.
   const OrbitCamera camera =
@@ -98,9 +103,8 @@ int run_cloth(const ClothArgs& args) {
       return report_error(ok.error().message);
   }
 
-  const std::filesystem::path out(args.out);
   std::optional<Pc2Writer> cache;
-  if (!args.out.empty()) {
+  if (!out.empty()) {
     if (auto ok = ensure_output_directory(out); !ok) return report_error(ok.error().message);
     auto opened = Pc2Writer::open(out / "cloth.pc2", sim->model().particle_count());
     if (!opened) return report_error(opened.error().message);
@@ -147,14 +151,9 @@ int run_cloth(const ClothArgs& args) {
                           args.tolerance,
                           divergence};
   if (cache) {
-    if (divergence) {
-      // A diverged run keeps its metrics (where and how it failed) and no animation: the new
-      // stream is dropped with the writer, and files of an earlier run in this folder go too,
-      // so no animation sits next to metrics it does not belong to.
-      std::filesystem::remove(out / "cloth.pc2");
-      std::filesystem::remove(out / "cloth.obj");
-      std::filesystem::remove(out / "final.png");
-    } else {
+    // A diverged run's results are its metrics (where and how it failed) and no animation:
+    // the unfinished cache is dropped with its writer.
+    if (!divergence) {
       describe_state();
       if (auto ok = pictures->write_png(out / "final.png", picture, camera); !ok) {
         return report_error(ok.error().message);
@@ -164,13 +163,15 @@ int run_cloth(const ClothArgs& args) {
         return report_error(ok.error().message);
       }
     }
-    // metrics.json last: once it is there, the run's files are complete.
     if (auto ok = write_file_atomic(out / "metrics.json", cloth_metrics_json(info, steps)); !ok) {
       return report_error(ok.error().message);
     }
   }
+  if (!divergence) {
+    if (auto ok = pictures->finish_video(); !ok) return report_error(ok.error().message);
+  }
+  if (auto ok = commit(); !ok) return report_error(ok.error().message);
   if (divergence) return report_error(*divergence);
-  if (auto ok = pictures->finish_video(); !ok) return report_error(ok.error().message);
 
   const ClothRunSummary s = summarize(steps);
   std::printf("%-15s %6s %9s %7s %12s %12s %10s %9s %13s\n", "integrator", "frames", "particles",
@@ -185,6 +186,13 @@ int run_cloth(const ClothArgs& args) {
   }
   if (!args.pictures.video.empty()) std::printf("wrote %s\n", args.pictures.video.c_str());
   return 0;
+}
+
+int run_cloth(const ClothArgs& args) {
+  std::string video = args.pictures.video;
+  auto output = RunOutput::begin(args.out, video);
+  if (!output) return report_error(output.error().message);
+  return run_cloth_in(args, output->dir(), video, [&] { return output->commit(); });
 }
 
 std::function<int()> add_cloth_command(CLI::App& app) {

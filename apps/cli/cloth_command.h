@@ -1,5 +1,6 @@
 #pragma once
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -21,8 +22,15 @@ struct ClothArgs {
   PictureArgs pictures;
 };
 
-/// Runs the simulation, prints the summary table, writes the files; returns the exit code.
+/// Runs the simulation, prints the summary table, writes the files into the --out folder
+/// (replaced whole at the end, see RunOutput); returns the exit code.
 int run_cloth(const ClothArgs& args);
+
+/// The same run writing into `out` (no files when empty) and the video to `video` (none when
+/// empty); `commit` is called once every file of the run is written (also after a divergence,
+/// whose metrics are the run's result), before the error or the summary is printed.
+int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const std::string& video,
+                 const std::function<Result<void>()>& commit);
 
 /// Registers `animkit cloth` on `app`; the returned function runs it after parsing.
 std::function<int()> add_cloth_command(CLI::App& app);

@@ -16,6 +16,7 @@
 #include "cloth_command.h"
 #include "ik_pictures.h"
 #include "ik_table.h"
+#include "run_output.h"
 
 namespace animkit::cli {
 
@@ -54,10 +55,10 @@ int draw_into(const Chain& chain, const std::filesystem::path& dir, const IkRunL
 // Every lab shape with every solver, lab defaults, then custom drawings (initials, the uneven
 // spiral as sampled and evened out) with CCD; one folder of reports per drawing and a
 // summary.csv comparing them.
-int run_ik_shapes(const DemoArgs& args) {
+int run_ik_shapes(const DemoArgs& args, const std::filesystem::path& out) {
   const auto chain = build_chain(lab_arm());
   if (!chain) return report_error(chain.error().message);
-  const std::filesystem::path ik_dir = std::filesystem::path(args.out) / "ik";
+  const std::filesystem::path ik_dir = out / "ik";
   if (auto ok = ensure_output_directory(ik_dir); !ok) return report_error(ok.error().message);
 
   std::printf(
@@ -112,21 +113,27 @@ int run_ik_shapes(const DemoArgs& args) {
   if (auto ok = write_file_atomic(ik_dir / "summary.csv", csv); !ok) {
     return report_error(ok.error().message);
   }
+  const std::filesystem::path shown = std::filesystem::path(args.out) / "ik";
   std::printf("\nOutputs: %s/<drawing>-<solver>/{metrics.json,path.csv,drawing.svg%s} and %s\n",
-              ik_dir.string().c_str(), args.no_picture ? "" : ",drawing.png",
-              (ik_dir / "summary.csv").string().c_str());
+              shown.string().c_str(), args.no_picture ? "" : ",drawing.png",
+              (shown / "summary.csv").string().c_str());
   return 0;
 }
 
 int run(const DemoArgs& args) {
+  // Everything goes into a staging folder swapped in at the end: the demo folder holds the
+  // previous complete demo or this one.
+  std::string no_video;
+  auto output = RunOutput::begin(args.out, no_video);
+  if (!output) return report_error(output.error().message);
   // The IK part's renderer (and its OpenGL context) is gone before the cloth makes its own.
-  if (const int code = run_ik_shapes(args); code != 0) return code;
+  if (const int code = run_ik_shapes(args, output->dir()); code != 0) return code;
 
   std::printf("\nThe lab's cloth (11 x 11, lab parameters) for 5 s at 60 steps per second:\n\n");
   ClothArgs cloth;
-  cloth.out = (std::filesystem::path(args.out) / "cloth").string();
+  cloth.out = (std::filesystem::path(args.out) / "cloth").string();  // as printed
   cloth.pictures.no_picture = args.no_picture;
-  return run_cloth(cloth);
+  return run_cloth_in(cloth, output->dir() / "cloth", no_video, [&] { return output->commit(); });
 }
 
 }  // namespace

@@ -11,10 +11,12 @@
 #include "animkit/io/ik_report.h"
 #include "animkit/kinematics/chain.h"
 #include "animkit/kinematics/drawing_session.h"
+#include "animkit/core/quote.h"
 #include "cli_errors.h"
 #include "drawing_args.h"
 #include "ik_pictures.h"
 #include "ik_table.h"
+#include "run_output.h"
 
 namespace animkit::cli {
 
@@ -64,12 +66,14 @@ void print_single_target(const Chain& chain, IkSolverKind solver, const DrawingR
 
 int run(const IkArgs& args) {
   const auto solver = parse_ik_solver(args.solver);
-  if (!solver) return report_error("unknown solver '" + args.solver + "' (expected ccd or fabrik)");
+  if (!solver) {
+    return report_error("unknown solver " + quote_input(args.solver) + " (expected ccd or fabrik)");
+  }
 
   const auto fabrik_rotations = parse_fabrik_rotations(args.fabrik_rotations);
   if (!fabrik_rotations) {
-    return report_error("unknown --fabrik-rotations '" + args.fabrik_rotations +
-                        "' (expected rest or previous)");
+    return report_error("unknown --fabrik-rotations " + quote_input(args.fabrik_rotations) +
+                        " (expected rest or previous)");
   }
 
   DrawingOptions options;
@@ -110,13 +114,25 @@ int run(const IkArgs& args) {
           "do not apply");
     }
     Vec3 target;
-    if (!parse_vec3(args.target, target)) {
-      return report_error("--target must be three finite numbers X,Y,Z, got '" + args.target + "'");
+    if (!parse_vec3(args.target, target) || target.cwiseAbs().maxCoeff() > kMaxTargetCoordinate) {
+      return report_error("--target must be three numbers X,Y,Z each within +-" +
+                          format_number(kMaxTargetCoordinate) + ", got " +
+                          quote_input(args.target));
     }
     trajectory = Trajectory::all_pen_down({target});
   }
+  if (args.picture_frame && *args.picture_frame < 0) {
+    return report_error("--picture-frame must be a frame number from 0, got " +
+                        std::to_string(*args.picture_frame));
+  }
+  // The --out folder is filled through a staging folder and swapped in whole at the end.
+  std::string video = args.pictures.video;
+  auto output = RunOutput::begin(args.out, video);
+  if (!output) return report_error(output.error().message);
   // Opened before the run, so a missing OpenGL or ffmpeg stops it before any file is written.
-  auto pictures = PictureOutput::open(args.pictures, !args.out.empty(), kIkVideoFps);
+  PictureArgs picture_args = args.pictures;
+  picture_args.video = video;
+  auto pictures = PictureOutput::open(picture_args, output->has_folder(), kIkVideoFps);
   if (!pictures) return report_error(pictures.error().message);
   const auto run = run_drawing(*chain, trajectory.targets, options, trajectory.pen_down);
   if (!run) return report_error(run.error().message);
@@ -124,18 +140,17 @@ int run(const IkArgs& args) {
     return report_error("--picture-frame " + std::to_string(*args.picture_frame) +
                         " is past the last frame (" + std::to_string(run->frames.size() - 1) + ")");
   }
-  if (!args.out.empty()) {
-    if (auto ok = ensure_output_directory(args.out); !ok) return report_error(ok.error().message);
-  }
-  if (auto rendered = render_ik_pictures(trajectory, *run, *pictures, args.out, args.picture_frame);
+  if (auto rendered =
+          render_ik_pictures(trajectory, *run, *pictures, output->dir(), args.picture_frame);
       !rendered) {
     return report_error(rendered.error().message);
   }
-  if (!args.out.empty()) {
-    if (auto written = write_ik_reports(args.out, label, options, *run); !written) {
+  if (output->has_folder()) {
+    if (auto written = write_ik_reports(output->dir(), label, options, *run); !written) {
       return report_error(written.error().message);
     }
   }
+  if (auto ok = output->commit(); !ok) return report_error(ok.error().message);
   if (drawing) {
     const DrawingSummary summary = summarize(*run);
     print_ik_table_header();
@@ -192,8 +207,7 @@ std::function<int()> add_ik_command(CLI::App& app) {
                  "needed)");
   add_picture_options(*ik, args->pictures, "drawing.png");
   ik->add_option("--picture-frame", args->picture_frame,
-                 "Show frame N (from 0) in drawing.png instead of the last: the arm mid-drawing")
-      ->check(CLI::NonNegativeNumber);
+                 "Show frame N (from 0) in drawing.png instead of the last: the arm mid-drawing");
   return [args] { return run(*args); };
 }
 

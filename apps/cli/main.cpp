@@ -1,17 +1,33 @@
 // animkit: command-line front end. Each subcommand is a thin shell over library calls.
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <string>
 
+#include "animkit/io/temporary_files.h"
 #include "cli_errors.h"
 #include "cloth_command.h"
 #include "demo_command.h"
 #include "ik_command.h"
 
-int main(int argc, char** argv) {
-  CLI::App app{
+namespace {
+
+// The printed results are part of the run: a full or closed standard output is an error, not
+// a success with the result lost (`animkit ik --target 1,0,0 >/dev/full`).
+int check_standard_output(int code) {
+  if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return code;
+  const int error = errno;
+  if (code != 0) return code;  // already reported
+  return animkit::cli::report_error(std::string("cannot write the results to standard output: ") +
+                                    std::strerror(error != 0 ? error : EIO));
+}
+
+int run(CLI::App& app, int argc, char** argv) {
+  app.description(
       "animkit: inverse kinematics (CCD, FABRIK) and mass-spring cloth, headless.\n"
-      "Run `animkit <command> --help` for a command's options."};
+      "Run `animkit <command> --help` for a command's options.");
   app.require_subcommand(1);
   app.set_version_flag("--version", "animkit 0.1.0");
   const auto run_ik = animkit::cli::add_ik_command(app);
@@ -36,4 +52,14 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {  // e.g. out of memory: still one line, never a crash
     return animkit::cli::report_error(e.what());
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // First, before any thread exists: SIGINT, SIGTERM and SIGHUP then remove the run's
+  // temporary files and staging folder and stop ffmpeg before the process ends.
+  animkit::install_signal_cleanup();
+  CLI::App app;
+  return check_standard_output(run(app, argc, argv));
 }

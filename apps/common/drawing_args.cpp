@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "animkit/core/quote.h"
+
 namespace animkit::apps {
 
 CLI::Option* add_drawing_options(CLI::App& command, DrawingArgs& args) {
@@ -81,7 +83,8 @@ Result<std::pair<DrawingSource, DrawingLayout>> drawing_request(const DrawingArg
   if (args.thinning) {
     const auto thinning = parse_thinning(*args.thinning);
     if (!thinning) {
-      return fail("unknown --thinning '" + *args.thinning + "' (expected zhang-suen or guo-hall)");
+      return fail("unknown --thinning " + quote_input(*args.thinning) +
+                  " (expected zhang-suen or guo-hall)");
     }
     source.image.thinning = *thinning;
   }
@@ -89,13 +92,18 @@ Result<std::pair<DrawingSource, DrawingLayout>> drawing_request(const DrawingArg
   if (auto error = source.image.validate()) return fail(error->message);
   layout.spacing = args.spacing;
   if (!args.box.empty()) {
+    if (source.kind == DrawingSourceKind::shape) {
+      return fail(
+          "--box applies to --text, --image, --mnist and --curve; the built-in shapes keep "
+          "the lab's placement");
+    }
     DrawingBox box;
     char tail = 0;
     if (std::sscanf(args.box.c_str(), "%lf,%lf,%lf%c", &box.center_x, &box.center_z,
                     &box.half_extent, &tail) != 3 ||
         !std::isfinite(box.center_x) || !std::isfinite(box.center_z) ||
         !std::isfinite(box.half_extent) || box.half_extent <= 0.0) {
-      return fail("--box must be X,Z,HALF with HALF > 0, got '" + args.box + "'");
+      return fail("--box must be X,Z,HALF with HALF > 0, got " + quote_input(args.box));
     }
     layout.box = box;
   }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "animkit/cloth/parameter_ranges.h"
 #include "animkit/cloth/spring_energy.h"
 #include "animkit/core/validation.h"
 
@@ -29,17 +30,24 @@ double resolved_rest_length(const ClothDesc& desc, const SpringDesc& s) {
 
 std::optional<Error> ClothDesc::validate() const {
   if (particles.empty()) return Error{"the cloth has no particles"};
-  if (!std::isfinite(gravity)) return Error{"gravity must be finite"};
-  if (!std::isfinite(damping) || damping < 0.0) {
-    return Error{"damping must be a finite number >= 0, got " + format_number(damping)};
-  }
+  if (!kGravityRange.contains(gravity)) return Error{kGravityRange.refusal("gravity", gravity)};
+  if (!kDampingRange.contains(damping)) return Error{kDampingRange.refusal("damping", damping)};
+  const auto within = [](const ParameterRange& range, const Vec3& v) {
+    return range.contains(v.x()) && range.contains(v.y()) && range.contains(v.z());
+  };
   for (std::size_t i = 0; i < particles.size(); ++i) {
     const ParticleDesc& p = particles[i];
     if (!is_finite(p.position)) return Error{particle(i) + " has a non-finite position"};
     if (!is_finite(p.velocity)) return Error{particle(i) + " has a non-finite velocity"};
-    if (!finite_positive(p.mass)) {
-      return Error{particle(i) + " mass must be positive and finite, got " + format_number(p.mass)};
+    if (!within(kCoordinateRange, p.position)) {
+      return Error{particle(i) + " position " + to_string(p.position) + " is beyond +-" +
+                   format_number(kCoordinateRange.max)};
     }
+    if (!within(kSpeedRange, p.velocity)) {
+      return Error{particle(i) + " velocity " + to_string(p.velocity) + " is beyond +-" +
+                   format_number(kSpeedRange.max)};
+    }
+    if (!kMassRange.contains(p.mass)) return Error{kMassRange.refusal(particle(i) + " mass", p.mass)};
   }
   const int n = static_cast<int>(particles.size());
   for (std::size_t s = 0; s < springs.size(); ++s) {
@@ -51,9 +59,8 @@ std::optional<Error> ClothDesc::validate() const {
     if (sp.a == sp.b) {
       return Error{spring(s) + " joins particle " + std::to_string(sp.a) + " to itself"};
     }
-    if (!finite_positive(sp.stiffness)) {
-      return Error{spring(s) + " stiffness must be positive and finite, got " +
-                   format_number(sp.stiffness)};
+    if (!kStiffnessRange.contains(sp.stiffness)) {
+      return Error{kStiffnessRange.refusal(spring(s) + " stiffness", sp.stiffness)};
     }
     const double length = resolved_rest_length(*this, sp);
     if (!finite_positive(length)) {

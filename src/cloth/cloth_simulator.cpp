@@ -6,6 +6,7 @@
 #include <string>
 
 #include "animkit/cloth/explicit_euler.h"
+#include "animkit/cloth/parameter_ranges.h"
 #include "animkit/core/validation.h"
 
 namespace animkit {
@@ -36,9 +37,10 @@ std::optional<IntegratorKind> parse_integrator(std::string_view name) {
 }
 
 std::optional<Error> SimulationOptions::validate() const {
-  if (substeps < 0)
-    return Error{"substeps must be at least 1 (or 0 for the default), got " +
-                 std::to_string(substeps)};
+  if (substeps < 0 || substeps > kMaxSubsteps) {
+    return Error{"substeps must be between 1 and " + std::to_string(kMaxSubsteps) +
+                 " (or 0 for the default), got " + std::to_string(substeps)};
+  }
   return implicit.validate();
 }
 
@@ -155,9 +157,7 @@ Result<void> ClothSimulator::set_state(const ClothState& state) {
 }
 
 Result<StepReport> ClothSimulator::step(double dt) {
-  if (!std::isfinite(dt) || dt <= 0.0) {
-    return fail("time step must be a positive finite number, got " + format_number(dt));
-  }
+  if (!kTimeStepRange.contains(dt)) return fail(kTimeStepRange.refusal("time step", dt));
   Impl& s = *impl_;
   const auto start = std::chrono::steady_clock::now();
   StepReport report;
@@ -171,7 +171,14 @@ Result<StepReport> ClothSimulator::step(double dt) {
   } else {
     for (int k = 0; k < report.substeps; ++k) s.implicit_euler->step(s.state, h, report, external);
   }
-  if (auto problem = divergence(s.state)) {
+  std::optional<std::string> problem = divergence(s.state);
+  if (!problem && !(std::isfinite(report.gradient_norm_start) &&
+                    std::isfinite(report.gradient_norm_end))) {
+    // Finite positions from a non-finite gradient are not a result: the step could not be
+    // computed (never converged, whatever the comparisons with infinity said).
+    problem = "the incremental potential's gradient is not finite";
+  }
+  if (problem) {
     s.state.positions = s.backup.positions;
     s.state.velocities = s.backup.velocities;
     return fail("the simulation diverged in step " + std::to_string(s.steps + 1) + " (" +

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "animkit/cloth/parameter_ranges.h"
 #include "animkit/core/validation.h"
 
 namespace animkit {
@@ -16,15 +17,16 @@ std::optional<Error> GridClothOptions::validate() const {
   if (!positive(size))
     return Error{"cloth size must be positive and finite, got " + format_number(size)};
   if (!std::isfinite(height)) return Error{"cloth height must be finite"};
-  if (!positive(mass)) return Error{"mass must be positive and finite, got " + format_number(mass)};
-  if (!positive(stiffness)) {
-    return Error{"stiffness must be positive and finite, got " + format_number(stiffness)};
+  if (!kCoordinateRange.contains(size)) return Error{kCoordinateRange.refusal("cloth size", size)};
+  if (!kCoordinateRange.contains(height)) {
+    return Error{kCoordinateRange.refusal("cloth height", height)};
   }
-  if (!std::isfinite(damping) || damping < 0.0) {
-    return Error{"damping must be a finite number >= 0, got " + format_number(damping)};
+  if (!kMassRange.contains(mass)) return Error{kMassRange.refusal("mass", mass)};
+  if (!kStiffnessRange.contains(stiffness)) {
+    return Error{kStiffnessRange.refusal("stiffness", stiffness)};
   }
-  if (!std::isfinite(gravity))
-    return Error{"gravity must be finite, got " + format_number(gravity)};
+  if (!kDampingRange.contains(damping)) return Error{kDampingRange.refusal("damping", damping)};
+  if (!kGravityRange.contains(gravity)) return Error{kGravityRange.refusal("gravity", gravity)};
   return std::nullopt;
 }
 

@@ -127,8 +127,11 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
       std::max(options_.tolerance * start_norm,
                kRoundingFloor * (std::sqrt(inertia_scale) / (h * h) + spring_force_scale_));
   report.gradient_tolerance = std::max(report.gradient_tolerance, stop);
-  bool converged = gradient_norm <= stop;
-  for (int k = 0; !converged && k < options_.max_newton_iterations; ++k) {
+  // Written so that a NaN or an infinite norm never counts as converged (inf <= inf is true).
+  const auto reached = [&stop](double norm) { return std::isfinite(norm) && norm <= stop; };
+  bool converged = reached(gradient_norm);
+  for (int k = 0; !converged && std::isfinite(gradient_norm) && k < options_.max_newton_iterations;
+       ++k) {
     NewtonIterationRecord record;
     // g itself is needed only for the record: the line search works with differences.
     if (options_.record_iterations) record.objective = potential_.value(x_);
@@ -182,7 +185,7 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
     gradient_norm = gradient_.norm();
     report.ms_gradient += ms_since(t);
     ++report.newton_iterations;
-    converged = gradient_norm <= stop;
+    converged = reached(gradient_norm);
 
     record.decrease = decrease;
     if (options_.record_iterations) record.objective_after = potential_.value(x_);

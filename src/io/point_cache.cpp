@@ -49,27 +49,23 @@ std::string cloth_obj(const ClothModel& model, const ClothState& state) {
   return obj.str();
 }
 
-Pc2Writer::Pc2Writer(std::FILE* file, std::filesystem::path path, int points)
-    : file_(file),
-      path_(std::move(path)),
-      points_(points),
-      buffer_(3 * static_cast<std::size_t>(points)) {}
+Pc2Writer::Pc2Writer(AtomicFile file, int points)
+    : file_(std::move(file)), points_(points), buffer_(3 * static_cast<std::size_t>(points)) {}
 
 Pc2Writer::Pc2Writer(Pc2Writer&& other) noexcept
-    : file_(std::exchange(other.file_, nullptr)),
-      path_(std::move(other.path_)),
+    : file_(std::move(other.file_)),
       points_(other.points_),
       samples_(other.samples_),
-      buffer_(std::move(other.buffer_)) {}
-
-Pc2Writer::~Pc2Writer() {
-  // Never finished: leave nothing half-written behind.
-  if (file_ != nullptr) (void)commit_temporary(file_, path_, /*ok=*/false);
+      buffer_(std::move(other.buffer_)) {
+  other.file_.reset();
 }
 
+// Never finished: the AtomicFile's destructor removes the temporary.
+Pc2Writer::~Pc2Writer() = default;
+
 Result<Pc2Writer> Pc2Writer::open(const std::filesystem::path& path, int points) {
-  std::FILE* file = open_temporary(path);
-  if (file == nullptr) return fail(io_error(path, "write"));
+  auto file = AtomicFile::create(path);
+  if (!file) return fail(file.error().message);
   Pc2Header header{};
   std::memcpy(header.signature, kSignature, sizeof kSignature);
   header.version = 1;
@@ -77,32 +73,39 @@ Result<Pc2Writer> Pc2Writer::open(const std::filesystem::path& path, int points)
   header.start_frame = 0.0f;
   header.sample_rate = 1.0f;
   header.samples = 0;  // patched by finish()
-  Pc2Writer writer(file, path, points);
-  if (std::fwrite(&header, sizeof header, 1, file) != 1) return fail(io_error(path, "write"));
-  return writer;
+  if (std::fwrite(&header, sizeof header, 1, file->stream()) != 1) {
+    return fail(io_error(path, "write"));
+  }
+  return Pc2Writer(std::move(*file), points);
 }
 
 Result<void> Pc2Writer::add_frame(const Eigen::VectorXd& positions) {
+  if (!file_) return fail("cannot write a PC2 file that is already finished");
+  const std::filesystem::path& path = file_->path();
   if (positions.size() != static_cast<Eigen::Index>(buffer_.size())) {
-    return fail("cannot write " + path_.string() + ": a frame of " +
+    return fail("cannot write " + path.string() + ": a frame of " +
                 std::to_string(positions.size()) + " coordinates for " + std::to_string(points_) +
                 " points");
   }
   for (std::size_t i = 0; i < buffer_.size(); ++i) {
     buffer_[i] = static_cast<float>(positions[static_cast<Eigen::Index>(i)]);
   }
-  if (std::fwrite(buffer_.data(), sizeof(float), buffer_.size(), file_) != buffer_.size()) {
-    return fail(io_error(path_, "write"));
+  if (std::fwrite(buffer_.data(), sizeof(float), buffer_.size(), file_->stream()) !=
+      buffer_.size()) {
+    return fail(io_error(path, "write"));
   }
   ++samples_;
   return {};
 }
 
 Result<void> Pc2Writer::finish() {
+  if (!file_) return fail("cannot write a PC2 file that is already finished");
   const std::int32_t samples = samples_;
-  const bool patched = std::fseek(file_, kSampleCountOffset, SEEK_SET) == 0 &&
-                       std::fwrite(&samples, sizeof samples, 1, file_) == 1;
-  return commit_temporary(std::exchange(file_, nullptr), path_, patched);
+  const bool patched = std::fseek(file_->stream(), kSampleCountOffset, SEEK_SET) == 0 &&
+                       std::fwrite(&samples, sizeof samples, 1, file_->stream()) == 1;
+  auto committed = file_->commit(patched);
+  file_.reset();
+  return committed;
 }
 
 Result<PointCache> read_pc2(const std::filesystem::path& path) {

@@ -1,49 +1,58 @@
 #include "animkit/io/video_writer.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <system_error>
 #include <utility>
+#include <vector>
 
+#include "animkit/core/quote.h"
 #include "animkit/core/validation.h"
+#include "child_process.h"
 
 namespace animkit {
 
 namespace {
 
-// 'text' with every ' escaped, for /bin/sh.
-std::string shell_quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-std::string last_lines(const std::filesystem::path& log) {
+// The last non-empty line of ffmpeg's error log, or "".
+std::string last_line(const std::filesystem::path& log) {
   std::ifstream in(log);
   std::string line, last;
   while (std::getline(in, line)) {
     if (!line.empty()) last = line;
   }
-  return last.empty() ? "no message" : last;
+  return last;
+}
+
+// Creates `path` exclusively (never through a link): reserves a temporary's name and proves
+// the folder can be written before ffmpeg starts. The descriptor, or -1 with errno.
+int create_exclusive(const std::filesystem::path& path) {
+  return ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+}
+
+std::string cannot_write(const std::filesystem::path& path, const std::string& why) {
+  return "cannot write " + path.string() + ": " + why;
 }
 
 }  // namespace
 
-std::optional<std::filesystem::path> find_ffmpeg() {
+std::optional<std::filesystem::path> find_program(std::string_view name) {
   const char* path = std::getenv("PATH");
   if (!path) return std::nullopt;
   std::stringstream dirs(path);
   std::string dir;
   while (std::getline(dirs, dir, ':')) {
     if (dir.empty()) continue;
-    const std::filesystem::path candidate = std::filesystem::path(dir) / "ffmpeg";
+    const std::filesystem::path candidate = std::filesystem::path(dir) / name;
     std::error_code error;
     if (std::filesystem::is_regular_file(candidate, error) &&
         ::access(candidate.c_str(), X_OK) == 0) {
@@ -53,24 +62,25 @@ std::optional<std::filesystem::path> find_ffmpeg() {
   return std::nullopt;
 }
 
-VideoWriter::VideoWriter(std::FILE* pipe, std::filesystem::path path,
-                         std::filesystem::path temporary, std::filesystem::path log, int width,
-                         int height)
-    : pipe_(pipe),
-      path_(std::move(path)),
-      temporary_(std::move(temporary)),
-      log_(std::move(log)),
-      width_(width),
-      height_(height) {}
+std::optional<std::filesystem::path> find_ffmpeg() {
+  return find_program("ffmpeg");
+}
 
 VideoWriter::VideoWriter(VideoWriter&& other) noexcept
-    : pipe_(std::exchange(other.pipe_, nullptr)),
+    : pipe_(std::exchange(other.pipe_, -1)),
+      ffmpeg_(std::exchange(other.ffmpeg_, 0)),
       path_(std::move(other.path_)),
       temporary_(std::move(other.temporary_)),
       log_(std::move(other.log_)),
+      temporary_cleanup_(std::move(other.temporary_cleanup_)),
+      log_cleanup_(std::move(other.log_cleanup_)),
+      child_(std::move(other.child_)),
+      ffprobe_(std::move(other.ffprobe_)),
       width_(other.width_),
       height_(other.height_),
       frames_(other.frames_),
+      gif_(other.gif_),
+      gif_resampled_(other.gif_resampled_),
       previous_sigpipe_(std::exchange(other.previous_sigpipe_, SIG_ERR)) {}
 
 VideoWriter::~VideoWriter() {
@@ -83,13 +93,17 @@ void VideoWriter::restore_sigpipe() {
 }
 
 void VideoWriter::abandon() {
-  if (!pipe_) return;
-  pclose(pipe_);
-  pipe_ = nullptr;
+  if (pipe_ >= 0) ::close(std::exchange(pipe_, -1));
+  if (ffmpeg_ != 0) {
+    ::kill(ffmpeg_, SIGKILL);  // an abandoned video is not worth finishing
+    detail::wait_program(std::exchange(ffmpeg_, 0));
+  }
+  child_.release();
   restore_sigpipe();
-  std::error_code ignored;
-  std::filesystem::remove(temporary_, ignored);
-  std::filesystem::remove(log_, ignored);
+  if (!temporary_.empty()) ::unlink(temporary_.c_str());
+  if (!log_.empty()) ::unlink(log_.c_str());
+  temporary_cleanup_.release();
+  log_cleanup_.release();
 }
 
 Result<VideoWriter> VideoWriter::open(const std::filesystem::path& path, int width, int height,
@@ -110,34 +124,69 @@ Result<VideoWriter> VideoWriter::open(const std::filesystem::path& path, int wid
       path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   std::error_code folder_error;
   if (!std::filesystem::is_directory(folder, folder_error)) {
-    return fail("cannot write " + path.string() + ": no folder " + folder.string());
+    return fail(cannot_write(path, "no folder " + folder.string()));
   }
   const auto ffmpeg = find_ffmpeg();
-  if (!ffmpeg) {
-    return fail("cannot write " + path.string() +
-                ": ffmpeg is not installed (on Debian: apt-get install ffmpeg)");
+  const auto ffprobe = find_program("ffprobe");
+  if (!ffmpeg || !ffprobe) {
+    return fail(cannot_write(path, std::string(ffmpeg ? "ffprobe" : "ffmpeg") +
+                                       " is not installed (on Debian: apt-get install ffmpeg)"));
   }
-  const std::filesystem::path temporary = path.string() + ".tmp";
-  const std::filesystem::path log = path.string() + ".ffmpeg.log";
-  std::ostringstream command;
-  command << shell_quote(ffmpeg->string()) << " -hide_banner -loglevel error -nostdin -y"
-          << " -f rawvideo -pix_fmt rgba -s " << width << "x" << height << " -r " << fps << " -i -";
-  if (extension == ".mp4") {
-    command << " -c:v libx264 -pix_fmt yuv420p -crf 20 -movflags +faststart -f mp4";
-  } else {
+  remove_stale_temporaries(folder);
+
+  VideoWriter writer;
+  writer.path_ = path;
+  writer.width_ = width;
+  writer.height_ = height;
+  writer.ffprobe_ = *ffprobe;
+  writer.gif_ = extension == ".gif";
+  writer.gif_resampled_ = writer.gif_ && fps > 50.0;
+  // Both names reserved here: a read-only folder or a name too long is one clear error now,
+  // not ffmpeg's complaint later.
+  const std::filesystem::path temporary = unique_sibling(path, "tmp");
+  const int video_fd = create_exclusive(temporary);
+  if (video_fd < 0) return fail(cannot_write(path, std::strerror(errno)));
+  ::close(video_fd);
+  writer.temporary_ = temporary;
+  writer.temporary_cleanup_ = CleanupHandle(temporary);
+  const std::filesystem::path log = unique_sibling(path, "log");
+  const int log_fd = create_exclusive(log);
+  if (log_fd < 0) return fail(cannot_write(path, std::strerror(errno)));
+  writer.log_ = log;
+  writer.log_cleanup_ = CleanupHandle(log);
+
+  std::vector<std::string> argv = {ffmpeg->string(), "-hide_banner", "-loglevel", "error",
+                                   "-nostdin", "-y", "-f", "rawvideo", "-pix_fmt", "rgba", "-s",
+                                   std::to_string(width) + "x" + std::to_string(height), "-r",
+                                   format_number(fps), "-i", "pipe:0"};
+  if (writer.gif_) {
     // GIF delays are whole hundredths of a second and players stretch 1/100 s to 1/10 s, so
     // above 50 fps frames are dropped to 50 fps (2/100 s each) to keep the timing. One
     // palette for the whole animation, made from its own frames.
-    command << " -vf '" << (fps > 50.0 ? "fps=50," : "")
-            << "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse' -f gif";
+    argv.insert(argv.end(), {"-vf",
+                             std::string(writer.gif_resampled_ ? "fps=50," : "") +
+                                 "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse",
+                             "-f", "gif"});
+  } else {
+    argv.insert(argv.end(), {"-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "20", "-movflags",
+                             "+faststart", "-f", "mp4"});
   }
-  command << " " << shell_quote(temporary.string()) << " 2> " << shell_quote(log.string());
-  std::FILE* pipe = popen(command.str().c_str(), "w");
-  if (!pipe) {
-    return fail("cannot write " + path.string() + ": ffmpeg did not start (" +
-                std::generic_category().message(errno) + ")");
+  argv.push_back("file:" + temporary.string());  // "file:": a name is never a protocol
+  int frames_pipe[2];
+  if (::pipe2(frames_pipe, O_CLOEXEC) != 0) {
+    ::close(log_fd);
+    return fail(cannot_write(path, std::strerror(errno)));
   }
-  VideoWriter writer(pipe, path, temporary, log, width, height);
+  auto pid = detail::spawn_program(argv, frames_pipe[0], -1, log_fd);
+  ::close(frames_pipe[0]);
+  ::close(log_fd);
+  if (!pid) {
+    ::close(frames_pipe[1]);
+    return fail(cannot_write(path, pid.error().message));
+  }
+  writer.pipe_ = frames_pipe[1];
+  writer.ffmpeg_ = *pid;
+  writer.child_ = ChildHandle(*pid);
   // A pipe to an ffmpeg that died would raise SIGPIPE and kill the caller; while the video is
   // open, a failed write is an error instead (the previous handler comes back after).
   writer.previous_sigpipe_ = std::signal(SIGPIPE, SIG_IGN);
@@ -145,40 +194,83 @@ Result<VideoWriter> VideoWriter::open(const std::filesystem::path& path, int wid
 }
 
 Result<void> VideoWriter::add_frame(const Image& frame) {
-  if (!pipe_) return fail(path_.string() + ": the video is already finished");
+  if (pipe_ < 0) return fail(path_.string() + ": the video is already finished");
   if (frame.width != width_ || frame.height != height_) {
     return fail(path_.string() + ": frame is " + std::to_string(frame.width) + "x" +
                 std::to_string(frame.height) + " but the video is " + std::to_string(width_) + "x" +
                 std::to_string(height_));
   }
-  const std::size_t bytes = frame.pixels.size() * sizeof(Pixel);
-  if (std::fwrite(frame.pixels.data(), 1, bytes, pipe_) != bytes) {
-    const std::string reason = last_lines(log_);
-    abandon();
-    return fail(path_.string() + ": ffmpeg stopped taking frames (" + reason + ")");
+  const char* bytes = reinterpret_cast<const char*>(frame.pixels.data());
+  std::size_t left = frame.pixels.size() * sizeof(Pixel);
+  while (left > 0) {
+    const ssize_t n = ::write(pipe_, bytes, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      ::close(std::exchange(pipe_, -1));
+      detail::wait_program(std::exchange(ffmpeg_, 0));
+      const std::string reason = last_line(log_);
+      abandon();
+      return fail(path_.string() + ": ffmpeg stopped taking frames (" +
+                  sanitize_message(reason.empty() ? "no message" : reason, 300) + ")");
+    }
+    bytes += n;
+    left -= static_cast<std::size_t>(n);
   }
   ++frames_;
   return {};
 }
 
-Result<void> VideoWriter::finish() {
-  if (!pipe_) return fail(path_.string() + ": the video is already finished");
-  const int status = pclose(std::exchange(pipe_, nullptr));
-  restore_sigpipe();
-  const std::string reason = last_lines(log_);
-  std::error_code ignored;
-  std::filesystem::remove(log_, ignored);
-  if (status != 0) {
-    std::filesystem::remove(temporary_, ignored);
-    return fail(path_.string() + ": ffmpeg failed (" + reason + ")");
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary_, path_, error);
-  if (error) {
-    std::filesystem::remove(temporary_, ignored);
-    return fail(path_.string() + ": " + error.message());
+Result<void> VideoWriter::check_complete() const {
+  // ffprobe decodes the container's index and counts the video packets: a file cut short
+  // (no MP4 moov atom, a GIF missing frames) either fails here or counts short.
+  auto counted = detail::run_program_output({ffprobe_.string(), "-v", "error", "-count_packets",
+                                            "-select_streams", "v:0", "-show_entries",
+                                            "stream=nb_read_packets", "-of", "csv=p=0",
+                                            "file:" + temporary_.string()});
+  if (!counted) return fail(path_.string() + ": the finished file cannot be read back");
+  char* end = nullptr;
+  const long packets = std::strtol(counted->c_str(), &end, 10);
+  // Resampling 60 to 50 fps keeps 5 frames in 6, give or take one at the ends.
+  const long expected = gif_resampled_ ? std::lround(frames_ * 50.0 / 60.0) : frames_;
+  const long slack = gif_resampled_ ? 2 : 0;
+  if (end == counted->c_str() || std::labs(packets - expected) > slack) {
+    return fail(path_.string() + ": the finished file holds " + std::to_string(packets) +
+                " frames of the " + std::to_string(expected) + " sent");
   }
   return {};
+}
+
+Result<void> VideoWriter::finish() {
+  if (pipe_ < 0) return fail(path_.string() + ": the video is already finished");
+  ::close(std::exchange(pipe_, -1));
+  const int status = detail::wait_program(std::exchange(ffmpeg_, 0));
+  child_.release();
+  restore_sigpipe();
+  // With -loglevel error, anything in the log is an error, even when ffmpeg exits 0.
+  const std::string reason = last_line(log_);
+  Result<void> outcome;
+  if (status != 0 || !reason.empty()) {
+    outcome = fail(path_.string() + ": ffmpeg failed (" +
+                   sanitize_message(reason.empty() ? "exit status " + std::to_string(status)
+                                                   : reason,
+                                    300) +
+                   ")");
+  } else {
+    outcome = check_complete();
+  }
+  if (outcome) {
+    // Synced before the rename, like every other output file.
+    const int fd = ::open(temporary_.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0 || ::fsync(fd) != 0) outcome = fail(cannot_write(path_, std::strerror(errno)));
+    if (fd >= 0) ::close(fd);
+  }
+  if (outcome && ::rename(temporary_.c_str(), path_.c_str()) != 0) {
+    outcome = fail(cannot_write(path_, std::strerror(errno)));
+  } else if (outcome) {
+    temporary_.clear();  // renamed into place: not ours to remove any more
+  }
+  abandon();  // removes the log, and the temporary unless it became the video
+  return outcome;
 }
 
 }  // namespace animkit

@@ -57,8 +57,15 @@ std::optional<FabrikRotations> parse_fabrik_rotations(std::string_view name) {
 
 Result<IkResult> solve_ik(IkSolverKind kind, const Chain& chain, Pose& pose, const Vec3& target,
                           const IkOptions& options) {
-  return kind == IkSolverKind::ccd ? solve_ccd(chain, pose, target, options)
-                                   : solve_fabrik(chain, pose, target, options);
+  auto result = kind == IkSolverKind::ccd ? solve_ccd(chain, pose, target, options)
+                                          : solve_fabrik(chain, pose, target, options);
+  // Inputs are checked, so this cannot happen short of a solver bug; if it does, a NaN error
+  // must never read as a converged solve.
+  if (result && !std::isfinite(result->error)) {
+    return fail(std::string(to_string(kind)) + " produced a non-finite error for target " +
+                to_string(target));
+  }
+  return result;
 }
 
 namespace detail {
@@ -69,6 +76,10 @@ std::optional<Error> validate_ik_input(const Chain& chain, const Pose& pose, con
                                        const IkOptions& options) {
   if (!is_finite(target)) {
     return Error{"target has a non-finite coordinate " + to_string(target)};
+  }
+  if (target.cwiseAbs().maxCoeff() > kMaxTargetCoordinate) {
+    return Error{"target " + to_string(target) + " has a coordinate beyond +-" +
+                 format_number(kMaxTargetCoordinate) + ", farther than a solve can place a chain"};
   }
   const std::size_t n = chain.local_offsets().size();
   const auto mismatch = [n](std::size_t size, const char* what) {

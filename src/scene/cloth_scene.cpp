@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "animkit/cloth/parameter_ranges.h"
 #include "animkit/core/validation.h"
 
 namespace animkit {
@@ -16,8 +17,8 @@ constexpr double kDragStiffness = 200.0;  // s^-2, per unit mass
 std::optional<Error> ClothSceneOptions::validate() const {
   if (auto error = grid.validate()) return error;
   if (auto error = simulation.validate()) return error;
-  if (!std::isfinite(time_step) || time_step <= 0.0) {
-    return Error{"time step must be a positive finite number, got " + format_number(time_step)};
+  if (!kTimeStepRange.contains(time_step)) {
+    return Error{kTimeStepRange.refusal("time step", time_step)};
   }
   return std::nullopt;
 }

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <sstream>
 
@@ -24,15 +26,52 @@ TEST(AtomicWrite, ReplacesTheFileWholeAndLeavesNoTemporary) {
   EXPECT_FALSE(fs::exists(dir / "a.txt.tmp"));
 }
 
-TEST(AtomicWrite, FailureNamesThePathAndKeepsTheOldFile) {
+TEST(AtomicWrite, AFailedWriteKeepsTheOldFileAndLeavesNoTemporary) {
   const fs::path dir = fresh_dir("atomic_write_fail");
   ASSERT_TRUE(write_file_atomic(dir / "keep.txt", "old"));
-  // A directory where the temporary file should go makes the write fail.
-  fs::create_directories(dir / "keep.txt.tmp");
-  const auto result = write_file_atomic(dir / "keep.txt", "new");
-  ASSERT_FALSE(result);
-  EXPECT_EQ(result.error().message.rfind("cannot write " + (dir / "keep.txt").string(), 0), 0u);
+  {
+    auto file = AtomicFile::create(dir / "keep.txt");
+    ASSERT_TRUE(file);
+    std::fputs("half of the new", file->stream());
+    const auto result = file->commit(/*ok=*/false);
+    ASSERT_FALSE(result);
+    EXPECT_EQ(result.error().message.rfind("cannot write " + (dir / "keep.txt").string(), 0), 0u);
+  }
   EXPECT_EQ(read_file(dir / "keep.txt"), "old");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+TEST(AtomicWrite, FailureNamesThePath) {
+  const fs::path dir = fresh_dir("atomic_write_no_folder");
+  const auto result = write_file_atomic(dir / "missing" / "a.txt", "x");
+  ASSERT_FALSE(result);
+  EXPECT_EQ(result.error().message,
+            "cannot write " + (dir / "missing" / "a.txt").string() + ": No such file or directory");
+}
+
+TEST(AtomicWrite, NeverWritesThroughALinkPlantedAtATemporaryName) {
+  // The temporary used to be "<name>.tmp": a link planted there made the write overwrite the
+  // file it pointed to.
+  const fs::path dir = fresh_dir("atomic_write_symlink");
+  ASSERT_TRUE(write_file_atomic(dir / "victim.txt", "precious"));
+  fs::create_symlink(dir / "victim.txt", dir / "path.csv.tmp");
+  ASSERT_TRUE(write_file_atomic(dir / "path.csv", "frame,x\n"));
+  EXPECT_EQ(read_file(dir / "victim.txt"), "precious");
+  EXPECT_EQ(read_file(dir / "path.csv"), "frame,x\n");
+}
+
+TEST(AtomicWrite, TwoWritersOfOneFileUseTwoTemporariesAndTheLastWinsWhole) {
+  const fs::path dir = fresh_dir("atomic_write_two");
+  auto first = AtomicFile::create(dir / "cloth.pc2");
+  auto second = AtomicFile::create(dir / "cloth.pc2");
+  ASSERT_TRUE(first && second);
+  std::fputs("first writer's whole file", first->stream());
+  std::fputs("second", second->stream());
+  ASSERT_TRUE(first->commit());
+  EXPECT_EQ(read_file(dir / "cloth.pc2"), "first writer's whole file");
+  ASSERT_TRUE(second->commit());
+  EXPECT_EQ(read_file(dir / "cloth.pc2"), "second");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
 }
 
 TEST(OutputDirectory, IsCreatedWithItsParents) {

@@ -75,7 +75,7 @@ TEST(ClothScene, ApplyKeepsTheMotionAndResetStartsOver) {
   broken.time_step = 0.0;
   const auto rejected = scene.apply(broken);
   ASSERT_FALSE(rejected.has_value());
-  EXPECT_EQ(rejected.error().message, "time step must be a positive finite number, got 0");
+  EXPECT_EQ(rejected.error().message, "time step must be between 1e-06 and 10, got 0");
   EXPECT_EQ(scene.options().grid.cells, 14);  // unchanged
 }
 

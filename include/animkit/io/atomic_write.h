@@ -1,24 +1,44 @@
 #pragma once
-// Output files are written whole or not at all: the bytes go to "<name>.tmp", are flushed,
-// and the temporary file is renamed over the destination.
+// Output files are written whole or not at all: the bytes go to a temporary file beside the
+// destination with a name no other run can take (temporary_files.h), created exclusively and
+// never through a symbolic link, then flushed, synced and renamed over the destination.
 #include <cstdio>
 #include <filesystem>
 #include <string_view>
 
 #include "animkit/core/result.h"
+#include "animkit/io/temporary_files.h"
 
 namespace animkit {
 
-/// "<path>.tmp": where an atomic write puts its bytes until they are complete.
-std::filesystem::path temporary_path(const std::filesystem::path& path);
+class AtomicFile {
+ public:
+  /// Creates the temporary for `path` (O_CREAT | O_EXCL | O_NOFOLLOW) after removing stale
+  /// temporaries of dead runs from its folder. Errors name `path` and the reason.
+  static Result<AtomicFile> create(const std::filesystem::path& path);
 
-/// Opens "<path>.tmp" for writing (binary); nullptr (with errno) on failure.
-std::FILE* open_temporary(const std::filesystem::path& path);
+  AtomicFile(AtomicFile&& other) noexcept;
+  AtomicFile& operator=(AtomicFile&&) = delete;
+  /// An uncommitted file is abandoned: the temporary is removed, `path` stays as it was.
+  ~AtomicFile();
 
-/// Ends an atomic write: flushes, syncs and closes `file` (open on temporary_path(path)), then
-/// renames it over `path`. `ok` false (an earlier write failed) or any failure here removes
-/// the temporary instead, leaving `path` as it was. Errors name the path and the reason.
-Result<void> commit_temporary(std::FILE* file, const std::filesystem::path& path, bool ok = true);
+  /// Where to write (binary). Valid until commit().
+  std::FILE* stream() const { return file_; }
+  const std::filesystem::path& path() const { return path_; }
+
+  /// Ends the write: flushes, syncs and closes, then renames the temporary over path(). `ok`
+  /// false (an earlier write failed) or any failure here removes the temporary instead, leaving
+  /// path() as it was. Errors name the path and the reason (e.g. "No space left on device").
+  Result<void> commit(bool ok = true);
+
+ private:
+  AtomicFile(std::FILE* file, std::filesystem::path path, std::filesystem::path temporary);
+  void abandon();
+
+  std::FILE* file_ = nullptr;
+  std::filesystem::path path_, temporary_;
+  CleanupHandle cleanup_;
+};
 
 /// Writes `content` to `path` atomically. Errors name the path and the reason.
 Result<void> write_file_atomic(const std::filesystem::path& path, std::string_view content);

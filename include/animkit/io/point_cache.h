@@ -6,11 +6,13 @@
 // float32 start frame, float32 sample rate, int32 samples, then samples x points x 3 float32.
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "animkit/cloth/cloth_model.h"
 #include "animkit/core/result.h"
+#include "animkit/io/atomic_write.h"
 
 namespace animkit {
 
@@ -18,8 +20,8 @@ namespace animkit {
 /// order) and one `f` per triangle.
 std::string cloth_obj(const ClothModel& model, const ClothState& state);
 
-/// Streams frames into "<path>.tmp" and renames it to `path` on finish(), so the file is
-/// written whole or not at all: a writer destroyed before finish() removes its temporary.
+/// Streams frames into a temporary file (AtomicFile) renamed to `path` on finish(), so the file
+/// is written whole or not at all: a writer destroyed before finish() removes its temporary.
 class Pc2Writer {
  public:
   static Result<Pc2Writer> open(const std::filesystem::path& path, int points);
@@ -33,9 +35,8 @@ class Pc2Writer {
   Result<void> finish();
 
  private:
-  Pc2Writer(std::FILE* file, std::filesystem::path path, int points);
-  std::FILE* file_ = nullptr;
-  std::filesystem::path path_;
+  Pc2Writer(AtomicFile file, int points);
+  std::optional<AtomicFile> file_;  // empty once finished
   int points_ = 0;
   int samples_ = 0;
   std::vector<float> buffer_;

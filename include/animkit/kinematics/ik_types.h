@@ -18,6 +18,11 @@ enum class FabrikRotations {
   from_previous,
 };
 
+/// Largest target coordinate a solve accepts (scene units, world space). Far beyond any reach,
+/// and small enough that squared distances (up to 3e18) neither overflow nor lose the chain's
+/// bone lengths entirely to rounding; a target beyond it is refused, not solved wrong.
+constexpr double kMaxTargetCoordinate = 1e9;
+
 /// Options of one IK solve. The defaults are the lab's (100 iterations, eps = 1e-4).
 struct IkOptions {
   int max_iterations = 100;  ///< cap on full solver iterations; >= 1
