@@ -150,6 +150,7 @@ class DrawingCliBadInput : public testing::TestWithParam<BadDrawing> {
     write_mnist(dir / "digits.idx");
     std::ofstream(dir / "bad.csv") << "0,0\n1,x\n";
     std::ofstream(dir / "inf.csv") << "0,0\n1e999,0\n";
+    std::ofstream(dir / "far.csv") << "1e308,0\n-1e308,0\n";
     std::ofstream(dir / "nul.csv") << "0,0\n" << std::string("1,1\0", 4) << "\n";
     folder() = dir;
   }
@@ -206,6 +207,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadDrawing{"--curve DIR/nul.csv",
                    "DIR/nul.csv line 2: holds a NUL byte (not a text file?): '1,1\\x00'"},
         BadDrawing{"--text QD --font DIR", "font DIR: is a folder, not a file"},
+        BadDrawing{"--curve DIR/far.csv",
+                   "DIR/far.csv: the drawing is too large to place (its size overflows)"},
         BadDrawing{"--text QD --image DIR/seven.png", "--text excludes --image"},
         BadDrawing{"--image DIR/seven.png --thinning medial", "unknown --thinning 'medial'"},
         BadDrawing{"--image DIR/seven.png --threshold 300",
