@@ -29,7 +29,8 @@ for source in "$root"/fuzz/*_fuzz.cpp; do
   echo "fuzz: $target for ${seconds} s ..."
   # -timeout: an input taking 10 s is a hang, reported like a crash. -rss_limit_mb and
   # -malloc_limit_mb: asking for more than 2 GB is a bug (a header trusted too far).
-  "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 \
+  ASAN_SYMBOLIZER_PATH="$(command -v llvm-symbolizer-16 || command -v llvm-symbolizer || true)" \
+    "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 \
     -artifact_prefix="$crashes/" -print_final_stats=1 "${inputs[@]}" >"$log" 2>&1
   status=$?
   runs="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')"
