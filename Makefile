@@ -2,13 +2,16 @@
 #   make demo   installs dependencies, builds (Release) and runs the built-in demo
 #   make test   installs dependencies, builds and runs every test, then again under ASan+UBSan
 #               (a Debug build at -O1, so assertions are checked too)
+#   make fuzz   builds the libFuzzer targets with clang 16 and runs each FUZZ_SECONDS (60)
 JOBS   ?= $(shell nproc)
 OUT    ?= out/demo
 CMAKE  := cmake
 RELEASE_DIR  := build/release
 SANITIZE_DIR := build/sanitize
+FUZZ_DIR     := build/fuzz
+FUZZ_SECONDS ?= 60
 
-.PHONY: deps build demo viewer test test-release test-sanitize bench clean
+.PHONY: deps fuzz-deps build demo viewer test test-release test-sanitize fuzz bench clean
 
 deps:
 	bash scripts/install-deps.sh
@@ -43,6 +46,19 @@ test-sanitize: deps
 	cd $(SANITIZE_DIR) && ctest --output-on-failure -j $(JOBS) --repeat until-pass:2
 
 test: test-release test-sanitize
+
+fuzz-deps:
+	bash scripts/install-fuzz-deps.sh
+
+# The library and the fuzz targets only (a Debug build at -O1: assertions are checked too),
+# with libFuzzer, ASan and UBSan; then every target runs FUZZ_SECONDS over its corpus and kept
+# crash inputs (scripts/run-fuzzers.sh), failing on any crash.
+fuzz: deps fuzz-deps
+	$(CMAKE) -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++-16 \
+	  -DANIMKIT_BUILD_FUZZERS=ON -DANIMKIT_BUILD_TESTS=OFF -DANIMKIT_BUILD_CLI=OFF \
+	  -DANIMKIT_BUILD_VIEWER=OFF -DANIMKIT_BUILD_BENCHMARKS=OFF
+	$(CMAKE) --build $(FUZZ_DIR) -j $(JOBS)
+	bash scripts/run-fuzzers.sh $(FUZZ_DIR) $(FUZZ_SECONDS)
 
 bench: build
 	$(RELEASE_DIR)/bench/ik_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true

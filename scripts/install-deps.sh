@@ -15,6 +15,8 @@ packages=(
   libimgui-dev
   # Videos (--video) and the viewer's window test under a virtual display.
   ffmpeg xvfb xauth
+  # The SVG tests check drawing.svg with a real XML parser (xmllint).
+  libxml2-utils
 )
 
 missing=()

@@ -1,55 +1,88 @@
 #include "animkit/io/curve_csv.h"
 
+#include <cfenv>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <string>
+
+#include "animkit/core/quote.h"
+#include "animkit/io/file_bytes.h"
 
 namespace animkit {
 
 namespace {
 
-// "x,z" (spaces allowed around each number) as two finite numbers.
-bool parse_pair(const std::string& line, double& x, double& z) {
-  const char* text = line.c_str();
-  char* end = nullptr;
-  x = std::strtod(text, &end);
-  if (end == text) return false;
-  while (*end == ' ' || *end == '\t') ++end;
-  if (*end != ',') return false;
-  const char* second = end + 1;
-  z = std::strtod(second, &end);
-  if (end == second) return false;
-  while (*end == ' ' || *end == '\t' || *end == '\r') ++end;
-  return *end == '\0' && std::isfinite(x) && std::isfinite(z);
+std::string_view trim(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
 }
+
+// One number, all of `field` (spaces around it allowed), as strtod reads it ("1e-3", "+2").
+// Copied first: strtod needs a NUL terminator and the field is a view into the file.
+bool parse_number(std::string_view field, double& value) {
+  const std::string owned(trim(field));
+  char* end = nullptr;
+  value = std::strtod(owned.c_str(), &end);
+  return !owned.empty() && end == owned.c_str() + owned.size();
+}
+
+// strtod signals overflow ("1e999") by raising the floating-point overflow flag on purpose;
+// held here so a caller that traps floating-point exceptions gets an error value, not SIGFPE.
+class HeldFloatingPointExceptions {
+ public:
+  HeldFloatingPointExceptions() { std::feholdexcept(&saved_); }
+  ~HeldFloatingPointExceptions() { std::fesetenv(&saved_); }
+  HeldFloatingPointExceptions(const HeldFloatingPointExceptions&) = delete;
+  HeldFloatingPointExceptions& operator=(const HeldFloatingPointExceptions&) = delete;
+
+ private:
+  std::fenv_t saved_;
+};
 
 }  // namespace
 
-Result<Strokes> read_curve_csv(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) return fail(path.string() + ": cannot open the file");
+Result<Strokes> parse_curve_csv(std::string_view text, std::string_view name) {
+  const std::string file(name);
+  const HeldFloatingPointExceptions held;
   Strokes strokes(1);
-  std::string line;
   int number = 0;
-  while (std::getline(in, line)) {
+  while (!text.empty()) {
+    const std::size_t newline = text.find('\n');
+    const std::string_view line = text.substr(0, newline);
+    text.remove_prefix(newline == std::string_view::npos ? text.size() : newline + 1);
     ++number;
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos) {
+    const std::string where = file + " line " + std::to_string(number);
+    // A NUL is refused, not read as the end of the line: it would hide what follows it.
+    if (line.find('\0') != std::string_view::npos) {
+      return fail(where + ": holds a NUL byte (not a text file?): " + quote_input(line));
+    }
+    const std::string_view content = trim(line);
+    if (content.empty()) {
       if (!strokes.back().empty()) strokes.emplace_back();  // pen up
       continue;
     }
-    if (line[first] == '#') continue;
+    if (content.front() == '#') continue;
+    const std::size_t comma = content.find(',');
     double x = 0.0, z = 0.0;
-    if (!parse_pair(line.substr(first), x, z)) {
-      return fail(path.string() + " line " + std::to_string(number) +
-                  ": expected two finite numbers x,z, got '" + line + "'");
+    if (comma == std::string_view::npos || !parse_number(content.substr(0, comma), x) ||
+        !parse_number(content.substr(comma + 1), z)) {
+      return fail(where + ": expected two finite numbers x,z, got " + quote_input(line));
+    }
+    if (!std::isfinite(x) || !std::isfinite(z)) {
+      return fail(where + ": the point is not finite, got " + quote_input(line));
     }
     strokes.back().emplace_back(x, -z);
   }
   if (strokes.back().empty()) strokes.pop_back();
-  if (strokes.empty()) return fail(path.string() + ": no points (expected lines of x,z)");
+  if (strokes.empty()) return fail(file + ": no points (expected lines of x,z)");
   return strokes;
+}
+
+Result<Strokes> read_curve_csv(const std::filesystem::path& path) {
+  auto bytes = read_file_bytes(path, kMaxCurveFileBytes);
+  if (!bytes) return fail(bytes.error().message);
+  return parse_curve_csv(*bytes, path.string());
 }
 
 }  // namespace animkit

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "animkit/core/quote.h"
 #include "animkit/core/validation.h"
 #include "animkit/io/curve_csv.h"
 #include "animkit/io/image_input.h"
@@ -27,7 +28,7 @@ Result<std::vector<Vec3>> builtin_shape(const std::string& name) {
   if (const auto shape = parse_lab_shape(name)) return lab_shape_targets(*shape);
   std::string names;
   for (const std::string& n : builtin_shape_names()) names += (names.empty() ? "" : ", ") + n;
-  return fail("unknown shape '" + name + "' (expected one of: " + names + ")");
+  return fail("unknown shape " + quote_input(name) + " (expected one of: " + names + ")");
 }
 
 // The source's strokes in its own frame (y up), a name for reports and, for images, the
@@ -87,9 +88,12 @@ Result<PreparedDrawing> prepare_drawing(const DrawingSource& source, const Drawi
     auto strokes = read_strokes(source, out.name, frame);
     if (!strokes) return fail(strokes.error().message);
     auto fitted = fit_to_box(
-        *strokes, layout.box.value_or(reachable_box(chain.root_position(), chain.reach())),
-        frame);
-    if (!fitted) return fail(fitted.error().message);
+        *strokes, layout.box.value_or(reachable_box(chain.root_position(), chain.reach())), frame);
+    if (!fitted) {
+      // E.g. a curve of finite points too far apart to scale: the file is named too.
+      const bool file = source.kind != DrawingSourceKind::text;
+      return fail((file ? source.file.string() + ": " : "") + fitted.error().message);
+    }
     placed = std::move(*fitted);
   }
   out.spacing_before = spacing_stats(placed);

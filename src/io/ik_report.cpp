@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "animkit/core/utf8.h"
 #include "animkit/io/atomic_write.h"
 
 namespace animkit {
@@ -40,7 +41,9 @@ std::string ik_metrics_json(const IkRunLabel& label, const DrawingOptions& optio
                     {"spacing_before", spacing(label.drawing->spacing_before)},
                     {"spacing_after", spacing(label.drawing->spacing_after)}};
   }
-  return j.dump(2) + "\n";
+  // Names come from users (a file name may hold any bytes): bytes that are not UTF-8 are
+  // written as U+FFFD rather than throwing, so the reports are always written.
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 std::string ik_path_csv(const DrawingRun& run) {
@@ -60,6 +63,49 @@ std::string ik_path_csv(const DrawingRun& run) {
 }
 
 namespace {
+
+// Text for XML character data and attribute values: the five markup characters as entities,
+// and what XML 1.0 forbids (control characters, bytes that are not UTF-8) as U+FFFD, so a
+// drawing named "a&b<c>.csv" or holding any bytes still makes a well-formed SVG.
+std::string xml_text(std::string_view raw) {
+  std::string out;
+  for (std::size_t i = 0; i < raw.size();) {
+    const char c = raw[i];
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x80) {
+      // A whole well-formed sequence is copied as it is (decode_utf8 judges it).
+      const std::size_t length = byte >= 0xF0 ? 4 : byte >= 0xE0 ? 3 : 2;
+      const std::string_view sequence = raw.substr(i, length);
+      const auto decoded = decode_utf8(sequence);
+      const bool ok = sequence.size() == length && decoded && decoded->size() == 1 &&
+                      (*decoded)[0] != 0xFFFE && (*decoded)[0] != 0xFFFF;
+      out += ok ? std::string(sequence) : "\xEF\xBF\xBD";
+      i += ok ? length : 1;
+      continue;
+    }
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += byte < 0x20 && c != '\t' && c != '\n' ? "\xEF\xBF\xBD" : std::string(1, c);
+    }
+    ++i;
+  }
+  return out;
+}
 
 // Maps the plane's (x, z) into SVG pixels with a uniform scale that fits every point.
 struct TopViewFrame {
@@ -103,10 +149,11 @@ std::string ik_drawing_svg(const IkRunLabel& label, const DrawingRun& run) {
   svg.precision(6);
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << size << "\" height=\""
       << size + title_height << "\" viewBox=\"0 0 " << size << ' ' << size + title_height << "\">\n"
-      << "<title>" << label.shape << " drawn with " << label.solver << "</title>\n"
+      << "<title>" << xml_text(label.shape) << " drawn with " << xml_text(label.solver)
+      << "</title>\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << "<text x=\"" << margin << "\" y=\"28\" font-family=\"sans-serif\" font-size=\"20\">"
-      << label.shape << " \xE2\x80\x94 " << label.solver << "</text>\n"
+      << xml_text(label.shape) << " \xE2\x80\x94 " << xml_text(label.solver) << "</text>\n"
       << "<text font-family=\"sans-serif\" font-size=\"12\" fill=\"#555\">"
       << "<tspan x=\"" << margin << "\" y=\"46\">top view of the plane y = 0 (x right, z down): "
       << "targets green, drawn path red</tspan>"

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "animkit/io/atomic_write.h"
+#include "animkit/io/file_bytes.h"
 
 namespace animkit {
 
@@ -108,40 +109,65 @@ Result<void> Pc2Writer::finish() {
   return committed;
 }
 
-Result<PointCache> read_pc2(const std::filesystem::path& path) {
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (file == nullptr) return fail(io_error(path, "read"));
+Result<PointCache> parse_pc2(std::span<const std::byte> bytes, std::string_view name) {
+  const auto problem = [&](const std::string& what) {
+    return fail(std::string(name) + " " + what);
+  };
   Pc2Header header{};
-  PointCache cache;
-  const bool has_header = std::fread(&header, sizeof header, 1, file) == 1;
-  std::string problem;
-  if (!has_header || std::memcmp(header.signature, kSignature, sizeof kSignature) != 0) {
-    problem = "is not a PC2 point cache (no POINTCACHE2 header)";
-  } else if (header.points < 0 || header.samples < 0) {
-    problem = "has a negative point or sample count";
-  } else if (std::error_code ec; 32 + 12 * static_cast<std::uintmax_t>(header.points) *
-                                          static_cast<std::uintmax_t>(header.samples) >
-                                 std::filesystem::file_size(path, ec)) {
-    // Checked before allocating: a corrupt header must not ask for gigabytes.
-    problem = "is truncated: its header promises " + std::to_string(header.samples) +
-              " frames of " + std::to_string(header.points) + " points";
-  } else {
-    cache.points = header.points;
-    cache.start_frame = header.start_frame;
-    cache.sample_rate = header.sample_rate;
-    const std::size_t count = 3 * static_cast<std::size_t>(header.points);
-    for (int s = 0; s < header.samples && problem.empty(); ++s) {
-      std::vector<float> frame(count);
-      if (std::fread(frame.data(), sizeof(float), count, file) != count) {
-        problem = "is truncated: frame " + std::to_string(s) + " of " +
-                  std::to_string(header.samples) + " is incomplete";
-      }
-      cache.frames.push_back(std::move(frame));
-    }
+  if (bytes.size() < sizeof header) {
+    return problem("is not a PC2 point cache (" + std::to_string(bytes.size()) +
+                   " bytes, shorter than its 32-byte header)");
   }
-  std::fclose(file);
-  if (!problem.empty()) return fail(path.string() + " " + problem);
+  std::memcpy(&header, bytes.data(), sizeof header);
+  if (std::memcmp(header.signature, kSignature, sizeof kSignature) != 0) {
+    return problem("is not a PC2 point cache (no POINTCACHE2 header)");
+  }
+  if (header.version != 1) {
+    return problem("has PC2 version " + std::to_string(header.version) + " (expected 1)");
+  }
+  if (header.points < 0 || header.samples < 0) {
+    return problem("has a negative point or sample count (" + std::to_string(header.points) +
+                   " points, " + std::to_string(header.samples) + " samples)");
+  }
+  // Frames without points take no bytes, so the size check below cannot bound them: a corrupt
+  // header could otherwise ask for a billion empty frames.
+  if (header.points == 0 && header.samples > 0) {
+    return problem("has " + std::to_string(header.samples) + " samples of 0 points");
+  }
+  // Checked by division first: samples x points x 12 can overflow 64 bits.
+  const std::uint64_t frame_bytes = 12 * static_cast<std::uint64_t>(header.points);
+  const std::uint64_t frame_room = bytes.size() - sizeof header;
+  const std::string promise =
+      std::to_string(header.samples) + " frames of " + std::to_string(header.points) + " points";
+  if (frame_bytes > 0 && static_cast<std::uint64_t>(header.samples) > frame_room / frame_bytes) {
+    return problem("is truncated: its header promises " + promise + ", the file has " +
+                   std::to_string(bytes.size()) + " bytes (room for " +
+                   std::to_string(frame_room / frame_bytes) + " frames)");
+  }
+  const std::uint64_t expected =
+      sizeof header + frame_bytes * static_cast<std::uint64_t>(header.samples);
+  if (bytes.size() != expected) {
+    return problem("has " + std::to_string(bytes.size()) + " bytes, more than the " +
+                   std::to_string(expected) + " of its header's " + promise);
+  }
+  PointCache cache;
+  cache.points = header.points;
+  cache.start_frame = header.start_frame;
+  cache.sample_rate = header.sample_rate;
+  const std::size_t count = 3 * static_cast<std::size_t>(header.points);
+  cache.frames.reserve(static_cast<std::size_t>(header.samples));
+  const std::byte* data = bytes.data() + sizeof header;
+  for (int s = 0; s < header.samples; ++s, data += count * sizeof(float)) {
+    std::vector<float>& frame = cache.frames.emplace_back(count);
+    std::memcpy(frame.data(), data, count * sizeof(float));
+  }
   return cache;
+}
+
+Result<PointCache> read_pc2(const std::filesystem::path& path) {
+  auto bytes = read_file_bytes(path, kMaxPc2FileBytes);
+  if (!bytes) return fail(bytes.error().message);
+  return parse_pc2(std::as_bytes(std::span(*bytes)), path.string());
 }
 
 }  // namespace animkit

@@ -10,50 +10,14 @@
 #include <string>
 #include <vector>
 
+#include "animkit/core/utf8.h"
 #include "animkit/core/validation.h"
+#include "animkit/io/file_bytes.h"
 #include "animkit/trajectory/image_strokes.h"
 
 namespace animkit {
 
 namespace {
-
-// Code points of UTF-8 text; nothing when the bytes are not valid UTF-8 (RFC 3629: no
-// overlong forms, no surrogates, nothing above U+10FFFF).
-std::optional<std::vector<char32_t>> decode_utf8(std::string_view text) {
-  std::vector<char32_t> out;
-  for (std::size_t i = 0; i < text.size();) {
-    const auto byte = static_cast<unsigned char>(text[i]);
-    int extra = 0;
-    char32_t c = 0, smallest = 0;
-    if (byte < 0x80) {
-      c = byte;
-    } else if (byte >= 0xC2 && byte <= 0xDF) {
-      c = byte & 0x1F;
-      extra = 1;
-      smallest = 0x80;
-    } else if ((byte & 0xF0) == 0xE0) {
-      c = byte & 0x0F;
-      extra = 2;
-      smallest = 0x800;
-    } else if (byte >= 0xF0 && byte <= 0xF4) {
-      c = byte & 0x07;
-      extra = 3;
-      smallest = 0x10000;
-    } else {
-      return std::nullopt;
-    }
-    if (i + static_cast<std::size_t>(extra) >= text.size() && extra > 0) return std::nullopt;
-    for (int k = 1; k <= extra; ++k) {
-      const auto next = static_cast<unsigned char>(text[i + k]);
-      if ((next & 0xC0) != 0x80) return std::nullopt;
-      c = (c << 6) | (next & 0x3F);
-    }
-    if (c < smallest || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) return std::nullopt;
-    out.push_back(c);
-    i += static_cast<std::size_t>(extra) + 1;
-  }
-  return out;
-}
 
 std::string code_point_name(char32_t c) {
   char text[16];
@@ -139,18 +103,37 @@ struct Flattener {
   }
 };
 
-Result<void> open_font(Library& lib, const std::filesystem::path& font) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(font, error)) {
-    return fail("font " + font.string() + ": no such file");
+// FreeType's words for the errors a wrong file gives (its own error strings are compiled out
+// of Debian's build).
+std::string freetype_error(FT_Error e) {
+  switch (e) {
+    case FT_Err_Unknown_File_Format:
+      return "unknown file format";
+    case FT_Err_Invalid_File_Format:
+      return "broken file";
+    case FT_Err_Invalid_Table:
+      return "broken table";
+    case FT_Err_Invalid_Argument:
+      return "invalid data";
+    case FT_Err_Invalid_Stream_Operation:
+      return "too short or cut";
+    default:
+      return "error " + std::to_string(e);
   }
+}
+
+Result<void> open_font(Library& lib, std::span<const std::byte> data, const std::string& name) {
+  if (data.empty()) return fail("font " + name + ": the file is empty");
   if (FT_Init_FreeType(&lib.handle)) return fail("FreeType could not start");
-  if (const FT_Error e = FT_New_Face(lib.handle, font.c_str(), 0, &lib.face)) {
+  // FreeType reads the bytes in place for as long as the face lives (the caller keeps them).
+  if (const FT_Error e =
+          FT_New_Memory_Face(lib.handle, reinterpret_cast<const FT_Byte*>(data.data()),
+                             static_cast<FT_Long>(data.size()), 0, &lib.face)) {
     lib.face = nullptr;
-    return fail("font " + font.string() + ": not a font FreeType can read (error " +
-                std::to_string(e) + ")");
+    return fail("font " + name + ": not a font FreeType can read (" + freetype_error(e) + ")");
   }
-  if (!FT_IS_SCALABLE(lib.face)) return fail("font " + font.string() + ": not an outline font");
+  if (!FT_IS_SCALABLE(lib.face)) return fail("font " + name + ": not an outline font");
+  if (lib.face->units_per_EM == 0) return fail("font " + name + ": its em size is 0");
   return {};
 }
 
@@ -164,12 +147,27 @@ std::optional<Error> TextOptions::validate() const {
 }
 
 Result<Strokes> text_strokes(std::string_view utf8, const TextOptions& options) {
+  // Text problems first: they need no file.
+  if (auto error = options.validate()) return fail(error->message);
+  if (utf8.empty()) return fail("the text is empty");
+  if (!decode_utf8(utf8)) return fail("the text is not valid UTF-8");
+  auto bytes = read_file_bytes(options.font, kMaxFontFileBytes);
+  if (!bytes) return fail("font " + bytes.error().message);
+  return text_strokes_from_font_data(utf8, std::as_bytes(std::span(*bytes)), options.font.string(),
+                                     options);
+}
+
+Result<Strokes> text_strokes_from_font_data(std::string_view utf8,
+                                            std::span<const std::byte> font_data,
+                                            std::string_view font_name,
+                                            const TextOptions& options) {
   if (auto error = options.validate()) return fail(error->message);
   if (utf8.empty()) return fail("the text is empty");
   const auto text = decode_utf8(utf8);
   if (!text) return fail("the text is not valid UTF-8");
+  const std::string font(font_name);
   Library lib;
-  if (auto opened = open_font(lib, options.font); !opened) return fail(opened.error().message);
+  if (auto opened = open_font(lib, font_data, font); !opened) return fail(opened.error().message);
   FT_Face face = lib.face;
   const double em = face->units_per_EM;
   // Centre lines come from rendered glyphs: 128 pixels per em is fine enough for a skeleton.
@@ -189,7 +187,7 @@ Result<Strokes> text_strokes(std::string_view utf8, const TextOptions& options) 
     }
     const FT_UInt glyph = FT_Get_Char_Index(face, c);
     if (glyph == 0) {
-      return fail("font " + options.font.string() + " has no glyph for " + code_point_name(c));
+      return fail("font " + font + " has no glyph for " + code_point_name(c));
     }
     if (previous && FT_HAS_KERNING(face)) {
       FT_Vector kerning;
@@ -201,9 +199,17 @@ Result<Strokes> text_strokes(std::string_view utf8, const TextOptions& options) 
       // Rendered from the outline (never an embedded bitmap strike) as 8-bit coverage.
       if (FT_Load_Glyph(face, glyph, FT_LOAD_RENDER | FT_LOAD_NO_BITMAP) ||
           face->glyph->bitmap.pixel_mode != FT_PIXEL_MODE_GRAY || face->glyph->bitmap.pitch < 0) {
-        return fail("font " + options.font.string() + ": cannot render " + code_point_name(c));
+        return fail("font " + font + ": cannot render " + code_point_name(c));
       }
       const FT_Bitmap& bitmap = face->glyph->bitmap;
+      // A broken font can claim a glyph thousands of ems wide: refused before the canvas is
+      // allocated (a real glyph spans a few ems at most).
+      constexpr unsigned kMaxGlyphPixels = 16 * kPixelsPerEm;
+      if (bitmap.rows > kMaxGlyphPixels || bitmap.width > kMaxGlyphPixels) {
+        return fail("font " + font + ": " + code_point_name(c) + " is " +
+                    std::to_string(bitmap.width) + "x" + std::to_string(bitmap.rows) +
+                    " pixels at 128 per em, larger than 16 ems");
+      }
       if (bitmap.rows > 0 && bitmap.width > 0) {
         // The glyph on white paper with a margin, then its skeleton as for any image.
         const int margin = 4;
@@ -212,8 +218,8 @@ Result<Strokes> text_strokes(std::string_view utf8, const TextOptions& options) 
         for (unsigned y = 0; y < bitmap.rows; ++y) {
           for (unsigned x = 0; x < bitmap.width; ++x) {
             canvas.at(static_cast<int>(x) + margin, static_cast<int>(y) + margin) =
-                static_cast<std::uint8_t>(
-                    255 - bitmap.buffer[static_cast<long>(y) * bitmap.pitch + x]);
+                static_cast<std::uint8_t>(255 -
+                                          bitmap.buffer[static_cast<long>(y) * bitmap.pitch + x]);
           }
         }
         ImageStrokeOptions image;
@@ -222,8 +228,7 @@ Result<Strokes> text_strokes(std::string_view utf8, const TextOptions& options) 
         image.speck_fraction = 0.0;
         auto skeleton = image_to_strokes(canvas, image);
         if (!skeleton) {
-          return fail("the centre line of " + code_point_name(c) + ": " +
-                      skeleton.error().message);
+          return fail("the centre line of " + code_point_name(c) + ": " + skeleton.error().message);
         }
         {
           // Pixels to font units: the canvas's top-left sits at the bitmap's origin.
@@ -238,7 +243,7 @@ Result<Strokes> text_strokes(std::string_view utf8, const TextOptions& options) 
       }
     } else {
       if (FT_Load_Glyph(face, glyph, FT_LOAD_NO_SCALE | FT_LOAD_NO_BITMAP)) {
-        return fail("font " + options.font.string() + ": cannot load " + code_point_name(c));
+        return fail("font " + font + ": cannot load " + code_point_name(c));
       }
       FT_Outline_Funcs funcs{};
       funcs.move_to = &Flattener::move_to;

@@ -42,7 +42,9 @@ Result<Strokes> fit_to_box(const Strokes& strokes, const DrawingBox& box,
   if (!std::isfinite(size)) return fail("the drawing is too large to place (its size overflows)");
   // A single point (or all points equal) stays a point at the centre.
   const double scale = size > 0.0 ? 2.0 * box.half_extent / size : 0.0;
-  const Point2 centre = bounds.center();
+  // min + half the size, not (min + max) / 2: that sum overflows for a point at 1e308 (found
+  // by fuzzing), while the size was just checked to be finite.
+  const Point2 centre = bounds.min() + 0.5 * bounds.sizes();
   Strokes out;
   out.reserve(strokes.size());
   for (const Stroke& stroke : strokes) {

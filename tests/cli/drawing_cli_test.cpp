@@ -91,6 +91,21 @@ TEST(DrawingCli, ImagesAndMnistDigitsAreDrawnAsSkeletons) {
   EXPECT_EQ(metrics(out / "seven")["converged_fraction"], 1.0);
 }
 
+TEST(DrawingCli, FileNamesWithMarkupOrBadBytesMakeValidReports) {
+  // Regression: the SVG was malformed for "a&b<c>.csv" and metrics.json failed on byte 0xff.
+  const fs::path dir = fresh("markup_names");
+  for (const std::string name : {"a&b<c>.csv", "quote \"\xff\".csv"}) {
+    std::ofstream(dir / name) << "0,0\n1,0\n1,1\n";
+    const fs::path out = dir / "out";
+    const auto r = run_command(kCli + " ik --no-picture --curve '" + (dir / name).string() +
+                               "' --out '" + out.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(run_command("xmllint --noout '" + (out / "drawing.svg").string() + "'").exit_code, 0)
+        << name;
+    EXPECT_EQ(metrics(out)["shape"].get<std::string>().rfind("curve ", 0), 0u);
+  }
+}
+
 TEST(DrawingCli, CurvesAndEvenSpacing) {
   const fs::path out = fresh("curve");
   std::ofstream(out / "ab.csv") << "0,0\n0,1\n1,1\n\n2,0\n3,1\n";
@@ -134,6 +149,9 @@ class DrawingCliBadInput : public testing::TestWithParam<BadDrawing> {
     write_mnist(dir / "labels.idx", 0x00000801u);
     write_mnist(dir / "digits.idx");
     std::ofstream(dir / "bad.csv") << "0,0\n1,x\n";
+    std::ofstream(dir / "inf.csv") << "0,0\n1e999,0\n";
+    std::ofstream(dir / "far.csv") << "1e308,0\n-1e308,0\n";
+    std::ofstream(dir / "nul.csv") << "0,0\n" << std::string("1,1\0", 4) << "\n";
     folder() = dir;
   }
   static fs::path& folder() {
@@ -183,7 +201,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadDrawing{"--text ' '", "the text has no visible glyphs"},
         BadDrawing{"--curve DIR/bad.csv",
                    "DIR/bad.csv line 2: expected two finite numbers x,z, got '1,x'"},
-        BadDrawing{"--curve DIR/none.csv", "DIR/none.csv: cannot open the file"},
+        BadDrawing{"--curve DIR/none.csv", "DIR/none.csv: no such file"},
+        BadDrawing{"--curve DIR/inf.csv",
+                   "DIR/inf.csv line 2: the point is not finite, got '1e999,0'"},
+        BadDrawing{"--curve DIR/nul.csv",
+                   "DIR/nul.csv line 2: holds a NUL byte (not a text file?): '1,1\\x00'"},
+        BadDrawing{"--text QD --font DIR", "font DIR: is a folder, not a file"},
+        BadDrawing{"--curve DIR/far.csv",
+                   "DIR/far.csv: the drawing is too large to place (its size overflows)"},
         BadDrawing{"--text QD --image DIR/seven.png", "--text excludes --image"},
         BadDrawing{"--image DIR/seven.png --thinning medial", "unknown --thinning 'medial'"},
         BadDrawing{"--image DIR/seven.png --threshold 300",

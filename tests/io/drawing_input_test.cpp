@@ -1,7 +1,9 @@
 // Reading drawings: images, MNIST files, CSV curves and text, and the errors for bad ones.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <fstream>
+#include <span>
 
 #include "../support/temp_files.h"
 #include "../trajectory/glyph_images.h"
@@ -143,14 +145,42 @@ TEST(ReadCurveCsv, BadFilesNameTheLine) {
   std::ofstream(dir / "bad.csv") << "0,0\n1,2\nx,3\n";
   EXPECT_EQ(read_curve_csv(dir / "bad.csv").error().message,
             (dir / "bad.csv").string() + " line 3: expected two finite numbers x,z, got 'x,3'");
-  std::ofstream(dir / "nan.csv") << "0,nan\n";
-  EXPECT_EQ(read_curve_csv(dir / "nan.csv").error().message,
-            (dir / "nan.csv").string() + " line 1: expected two finite numbers x,z, got '0,nan'");
   std::ofstream(dir / "empty.csv") << "# nothing\n\n";
   EXPECT_EQ(read_curve_csv(dir / "empty.csv").error().message,
             (dir / "empty.csv").string() + ": no points (expected lines of x,z)");
   EXPECT_EQ(read_curve_csv(dir / "missing.csv").error().message,
-            (dir / "missing.csv").string() + ": cannot open the file");
+            (dir / "missing.csv").string() + ": no such file");
+  EXPECT_EQ(read_curve_csv(dir).error().message, dir.string() + ": is a folder, not a file");
+}
+
+TEST(ReadCurveCsv, NonFinitePointsNameTheFileAndLine) {
+  const auto dir = fresh_dir("curve_nonfinite");
+  for (const std::string line : {"1e999,0", "nan,1", "0, -inf"}) {
+    std::ofstream(dir / "p.csv") << "0,0\n" << line << "\n";
+    EXPECT_EQ(read_curve_csv(dir / "p.csv").error().message,
+              (dir / "p.csv").string() + " line 2: the point is not finite, got '" + line + "'");
+  }
+}
+
+TEST(ReadCurveCsv, ANulByteIsRefusedWithItsLine) {
+  // Regression: the line was read as "1,2" and the rest of it silently dropped.
+  const auto dir = fresh_dir("curve_nul");
+  std::ofstream(dir / "nul.csv") << "0,0\n" << std::string("1,2\0 junk", 9) << "\n3,4\n";
+  EXPECT_EQ(
+      read_curve_csv(dir / "nul.csv").error().message,
+      (dir / "nul.csv").string() + " line 2: holds a NUL byte (not a text file?): '1,2\\x00 junk'");
+}
+
+TEST(ReadCurveCsv, RawLinesAreQuotedShortAndSafe) {
+  const auto dir = fresh_dir("curve_quoted");
+  std::ofstream(dir / "long.csv") << "0,0\n" << std::string(10'000'000, '7') << "\n";
+  const std::string message = read_curve_csv(dir / "long.csv").error().message;
+  EXPECT_LT(message.size(), dir.string().size() + 200) << message.substr(0, 300);
+  EXPECT_NE(message.find("...' (10000000 bytes)"), std::string::npos) << message.substr(0, 300);
+  std::ofstream(dir / "escape.csv") << "1,\x1b[2J\r\n";
+  EXPECT_EQ(read_curve_csv(dir / "escape.csv").error().message,
+            (dir / "escape.csv").string() +
+                " line 1: expected two finite numbers x,z, got '1,\\x1b[2J\\r'");
 }
 
 TEST(TextStrokes, QdHasFourClosedContours) {
@@ -211,6 +241,45 @@ TEST(TextStrokes, BadTextAndFontsAreClearErrors) {
             0u);
   EXPECT_EQ(text_strokes("\xe4\xb8\xad").error().message,
             "font " + kDefaultFont.string() + " has no glyph for U+4E2D");
+}
+
+TEST(TextStrokes, FoldersAndOtherFilesAreNamedForWhatTheyAre) {
+  // Regression: a folder was reported as "no such file".
+  const auto dir = fresh_dir("font_kinds");
+  EXPECT_EQ(text_strokes("A", {.font = dir}).error().message,
+            "font " + dir.string() + ": is a folder, not a file");
+  std::ofstream(dir / "empty.ttf").flush();
+  EXPECT_EQ(text_strokes("A", {.font = dir / "empty.ttf"}).error().message,
+            "font " + (dir / "empty.ttf").string() + ": the file is empty");
+  std::ofstream(dir / "notes.txt") << "these are not glyphs";
+  EXPECT_EQ(
+      text_strokes("A", {.font = dir / "notes.txt"}).error().message,
+      "font " + (dir / "notes.txt").string() + ": not a font FreeType can read (too short or cut)");
+  std::ofstream(dir / "notes-long.txt") << std::string(4000, 'x');
+  EXPECT_EQ(text_strokes("A", {.font = dir / "notes-long.txt"}).error().message,
+            "font " + (dir / "notes-long.txt").string() +
+                ": not a font FreeType can read (unknown file format)");
+}
+
+TEST(TextStrokes, AnUnreadableFontSaysWhy) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root reads any file";
+  const auto dir = fresh_dir("font_unreadable");
+  std::filesystem::copy_file(kDefaultFont, dir / "locked.ttf");
+  std::filesystem::permissions(dir / "locked.ttf", std::filesystem::perms::none);
+  EXPECT_EQ(text_strokes("A", {.font = dir / "locked.ttf"}).error().message,
+            "font " + (dir / "locked.ttf").string() + ": cannot read it (Permission denied)");
+}
+
+TEST(TextStrokes, FontsReadFromMemory) {
+  const std::string bytes = testing_support::read_file(kDefaultFont);
+  const auto strokes = text_strokes_from_font_data("QD", std::as_bytes(std::span(bytes)), "mem");
+  ASSERT_TRUE(strokes.has_value()) << strokes.error().message;
+  EXPECT_EQ(strokes->size(), 4u);
+  const std::string cut = bytes.substr(0, 1000);
+  EXPECT_EQ(text_strokes_from_font_data("Q", std::as_bytes(std::span(cut)), "cut")
+                .error()
+                .message.rfind("font cut: not a font FreeType can read (", 0),
+            0u);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -73,6 +74,33 @@ TEST_F(IkReport, SvgDrawsGreenTargetsAndARedPathWithATitle) {
     ++circles;
   EXPECT_EQ(circles, 150u);
   EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
+}
+
+// Whether xmllint (Debian's libxml2-utils) reads `svg` as well-formed XML.
+bool well_formed_xml(const std::filesystem::path& dir, const std::string& svg) {
+  std::ofstream(dir / "drawing.svg", std::ios::binary) << svg;
+  const std::string command = "xmllint --noout '" + (dir / "drawing.svg").string() + "'";
+  return std::system(command.c_str()) == 0;
+}
+
+TEST_F(IkReport, SvgEscapesNamesWithMarkup) {
+  // Regression: names were written raw, so "<&\">" made the SVG malformed.
+  const auto dir = testing_support::fresh_dir("ik_report_svg_markup");
+  for (const std::string shape : {"text <&\">", "curve a&b<c>.csv", "curve it's \xff\x01.csv"}) {
+    const std::string svg = ik_drawing_svg({shape, "ccd", std::nullopt}, run);
+    EXPECT_TRUE(well_formed_xml(dir, svg)) << shape;
+  }
+  EXPECT_NE(ik_drawing_svg({"text <&\">", "ccd", std::nullopt}, run)
+                .find("<title>text &lt;&amp;&quot;&gt; drawn with ccd</title>"),
+            std::string::npos);
+}
+
+TEST_F(IkReport, MetricsJsonSurvivesNamesThatAreNotUtf8) {
+  // Regression: nlohmann threw type_error 316 on the byte 0xff.
+  const IkRunLabel bad{"curve a\xff.csv", "ccd", std::nullopt};
+  std::string text;
+  ASSERT_NO_THROW(text = ik_metrics_json(bad, options, summarize(run)));
+  EXPECT_EQ(nlohmann::json::parse(text)["shape"], "curve a\xef\xbf\xbd.csv");
 }
 
 TEST_F(IkReport, WritesAllThreeFiles) {

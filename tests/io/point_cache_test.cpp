@@ -72,12 +72,60 @@ TEST(PointCache, RejectsFilesThatAreNotPointCaches) {
   fs::resize_file(dir / "short.pc2", 32 + 10);
   EXPECT_EQ(
       read_pc2(dir / "short.pc2").error().message,
-      (dir / "short.pc2").string() + " is truncated: its header promises 1 frames of 2 points");
+      (dir / "short.pc2").string() +
+          " is truncated: its header promises 1 frames of 2 points, the file has 42 bytes (room "
+          "for 0 frames)");
   {
     auto writer = Pc2Writer::open(dir / "wrong.pc2", 2);
     EXPECT_FALSE(writer->add_frame(Eigen::VectorXd::Ones(5)));  // 5 coordinates for 2 points
   }
   EXPECT_FALSE(read_pc2(dir / "missing.pc2"));
+}
+
+// A PC2 header: signature, version 1, the counts, start frame 0 and sample rate 1.
+std::string pc2_header(std::int32_t points, std::int32_t samples) {
+  std::string bytes("POINTCACHE2\0", 12);
+  const auto put = [&](auto value) {
+    bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
+  };
+  put(std::int32_t{1});
+  put(points);
+  put(0.0f);
+  put(1.0f);
+  put(samples);
+  return bytes;
+}
+
+TEST(PointCache, RefusesAHeaderOfEmptyFramesBeforeAllocating) {
+  // Regression: 0 points and 1.3e9 samples passed the size check (0 bytes of frames) and then
+  // allocated 1.3e9 empty frames (tens of gigabytes).
+  const fs::path dir = fresh_dir("pc2_empty_frames");
+  std::ofstream(dir / "zero.pc2", std::ios::binary) << pc2_header(0, 1'300'000'000);
+  const auto cache = read_pc2(dir / "zero.pc2");
+  ASSERT_FALSE(cache);
+  EXPECT_EQ(cache.error().message,
+            (dir / "zero.pc2").string() + " has 1300000000 samples of 0 points");
+}
+
+TEST(PointCache, TheSizeMustMatchTheHeaderExactly) {
+  const fs::path dir = fresh_dir("pc2_size");
+  std::ofstream(dir / "long.pc2", std::ios::binary) << pc2_header(1, 1) + std::string(12 + 5, 'x');
+  EXPECT_EQ(read_pc2(dir / "long.pc2").error().message,
+            (dir / "long.pc2").string() +
+                " has 49 bytes, more than the 44 of its header's 1 frames of 1 points");
+  std::ofstream(dir / "huge.pc2", std::ios::binary) << pc2_header(2'000'000'000, 2'000'000'000);
+  EXPECT_EQ(read_pc2(dir / "huge.pc2").error().message,
+            (dir / "huge.pc2").string() +
+                " is truncated: its header promises 2000000000 frames of 2000000000 points, the "
+                "file has 32 bytes (room for 0 frames)");
+  std::ofstream(dir / "empty.pc2", std::ios::binary) << pc2_header(3, 0);
+  const auto empty = read_pc2(dir / "empty.pc2");
+  ASSERT_TRUE(empty) << empty.error().message;
+  EXPECT_EQ(empty->points, 3);
+  EXPECT_TRUE(empty->frames.empty());
+  fs::create_directory(dir / "folder.pc2");
+  EXPECT_EQ(read_pc2(dir / "folder.pc2").error().message,
+            (dir / "folder.pc2").string() + ": is a folder, not a file");
 }
 
 TEST(ClothObj, VerticesInParticleOrderAndOneBasedFaces) {

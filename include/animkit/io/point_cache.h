@@ -4,10 +4,13 @@
 //
 // PC2 layout (little-endian): char[12] "POINTCACHE2\0", int32 version = 1, int32 points,
 // float32 start frame, float32 sample rate, int32 samples, then samples x points x 3 float32.
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "animkit/cloth/cloth_model.h"
@@ -48,6 +51,15 @@ struct PointCache {
   float start_frame = 0.0f, sample_rate = 1.0f;
   std::vector<std::vector<float>> frames;
 };
+/// Largest point cache read (a 100 x 100 cloth for 10 000 frames is about 1.2 GB).
+constexpr std::uintmax_t kMaxPc2FileBytes = std::uintmax_t{2} << 30;
+
+/// The point cache held in `bytes`. `name` (the file's) starts every error: no POINTCACHE2
+/// header, an unknown version, negative counts, frames with no points, or a size that is not
+/// exactly the header's 32 bytes plus samples x points x 12 (checked before allocating).
+Result<PointCache> parse_pc2(std::span<const std::byte> bytes, std::string_view name);
+
+/// parse_pc2 of the file's bytes; also errors for a missing, unreadable or huge file.
 Result<PointCache> read_pc2(const std::filesystem::path& path);
 
 }  // namespace animkit

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Runs every fuzz target built in BUILD_DIR (default build/fuzz) for SECONDS (default 60) each:
+# over a scratch copy of fuzz/corpus/<name>/ (the repository's corpus does not grow) plus the
+# kept crash inputs in fuzz/regressions/<name>/. Crash inputs go to BUILD_DIR/crashes/<name>/,
+# logs to BUILD_DIR/logs/<name>.log. Exits 1 after all targets ran if any crashed, naming
+# each crashing target and its input file.
+set -uo pipefail
+build="${1:-build/fuzz}"
+seconds="${2:-60}"
+root="$(cd "$(dirname "$0")/.." && pwd)"
+
+failures=()
+for source in "$root"/fuzz/*_fuzz.cpp; do
+  target="$(basename "$source" .cpp)"
+  name="${target%_fuzz}"
+  binary="$build/fuzz/$target"
+  if [ ! -x "$binary" ]; then
+    failures+=("$target: not built ($binary)")
+    continue
+  fi
+  work="$build/work/$name"
+  crashes="$build/crashes/$name"
+  log="$build/logs/$name.log"
+  rm -rf "$work"
+  mkdir -p "$work" "$crashes" "$(dirname "$log")"
+  if [ -d "$root/fuzz/corpus/$name" ]; then cp -R "$root/fuzz/corpus/$name/." "$work/"; fi
+  inputs=("$work")
+  if [ -d "$root/fuzz/regressions/$name" ]; then inputs+=("$root/fuzz/regressions/$name"); fi
+  echo "fuzz: $target for ${seconds} s ..."
+  # -timeout: an input taking 10 s is a hang, reported like a crash. -rss_limit_mb and
+  # -malloc_limit_mb: asking for more than 2 GB is a bug (a header trusted too far).
+  ASAN_SYMBOLIZER_PATH="$(command -v llvm-symbolizer-16 || command -v llvm-symbolizer || true)" \
+    "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 \
+    -artifact_prefix="$crashes/" -print_final_stats=1 "${inputs[@]}" >"$log" 2>&1
+  status=$?
+  runs="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')"
+  if [ "$status" -ne 0 ]; then
+    input="$(grep -o 'Test unit written to .*' "$log" | tail -n 1 | sed 's/Test unit written to //')"
+    failures+=("$target: ${input:-no input written} (exit $status; log $log)")
+    grep -m 1 -A 12 -E '==ERROR|ERROR: libFuzzer|fuzz check failed|runtime error' "$log" | sed 's/^/  /'
+  else
+    echo "fuzz: $target: ${runs:-?} inputs, no crash"
+  fi
+done
+
+if [ ${#failures[@]} -gt 0 ]; then
+  echo "fuzz: FAILED" >&2
+  printf '  %s\n' "${failures[@]}" >&2
+  echo "Keep each input as a regression: fix the bug, then copy it to fuzz/regressions/<name>/." >&2
+  exit 1
+fi
+echo "fuzz: every target ran ${seconds} s without a crash"
