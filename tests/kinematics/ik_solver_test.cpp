@@ -154,6 +154,10 @@ TEST_P(IkSolverTest, SameInputSameBits) {
 TEST_P(IkSolverTest, BadInputsGiveClearErrors) {
   EXPECT_EQ(error_for(Vec3(kNaN, 0, 0)), "target has a non-finite coordinate (nan, 0, 0)");
   EXPECT_EQ(error_for(Vec3(0, kInf, 0)), "target has a non-finite coordinate (0, inf, 0)");
+  // Beyond what a solve can carry: 1e154 squared overflows, and used to bend the arm wrong.
+  EXPECT_EQ(error_for(Vec3(1e154, 0, 0)),
+            "target (1e+154, 0, 0) has a coordinate beyond +-1e+09, farther than a solve can "
+            "place a chain");
   EXPECT_EQ(error_for(Vec3(0.3, 0, 0), IkOptions{.max_iterations = 0}),
             "max iterations must be at least 1, got 0");
   EXPECT_EQ(error_for(Vec3(0.3, 0, 0), IkOptions{.tolerance = 0.0}),
