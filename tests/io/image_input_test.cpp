@@ -1,6 +1,6 @@
 // Reading pictures from files: broken files (cut short, damaged, lying headers, huge sizes)
 // are clear errors naming the file, never a picture with invented pixels. Each file is made
-// here from known pixels, then cut or damaged. (These cases all went wrong with stb_image:
+// here from known pixels, then cut or damaged. (All but the huge sizes went wrong with stb_image:
 // see issue 9.)
 #include "animkit/io/image_input.h"
 
