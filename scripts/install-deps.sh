@@ -5,7 +5,9 @@ set -euo pipefail
 
 packages=(
   build-essential cmake make git pkg-config
-  libeigen3-dev nlohmann-json3-dev libcli11-dev libstb-dev
+  libeigen3-dev nlohmann-json3-dev libcli11-dev
+  # Image decoding and PNG writing.
+  libpng-dev libjpeg62-turbo-dev
   # Text drawings: FreeType and the default font, DejaVu Sans.
   libfreetype-dev fonts-dejavu-core
   libgtest-dev libgmock-dev libbenchmark-dev

@@ -61,18 +61,16 @@ TEST(ReadGrayImage, BadFilesAreClearErrors) {
   EXPECT_EQ(read_gray_image(dir / "empty.png").error().message,
             (dir / "empty.png").string() + ": the file is empty");
   std::ofstream(dir / "notes.png") << "these are not pixels";
-  EXPECT_EQ(
-      read_gray_image(dir / "notes.png")
-          .error()
-          .message.rfind((dir / "notes.png").string() + ": not an image stb_image can read (", 0),
-      0u);
+  EXPECT_EQ(read_gray_image(dir / "notes.png").error().message,
+            (dir / "notes.png").string() +
+                ": not an image format animkit reads (supported: PNG, JPEG, BMP, PNM/PGM/PPM/PBM)");
   // A real PNG cut in half.
   ASSERT_TRUE(write_png(dir / "whole.png", rgba(testing_support::seven())).has_value());
   const std::string whole = testing_support::read_file(dir / "whole.png");
   std::ofstream(dir / "cut.png", std::ios::binary) << whole.substr(0, whole.size() / 2);
   const auto cut = read_gray_image(dir / "cut.png");
   ASSERT_FALSE(cut.has_value());
-  EXPECT_NE(cut.error().message.find("cut.png"), std::string::npos);
+  EXPECT_EQ(cut.error().message.rfind((dir / "cut.png").string() + ": truncated PNG (", 0), 0u);
   // A huge image is refused from its header, before decoding.
   ASSERT_TRUE(write_png(dir / "huge.png", Image(5000, 1)).has_value());
   EXPECT_EQ(read_gray_image(dir / "huge.png").error().message,

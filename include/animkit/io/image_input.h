@@ -1,6 +1,7 @@
 #pragma once
-// Reading the pictures a drawing can come from: PNG, JPEG, BMP (anything stb_image reads) and
-// the MNIST handwritten-digit files (the IDX format of LeCun et al.).
+// Reading the pictures a drawing can come from: PNG, JPEG, BMP, PNM (PGM, PPM, PBM) and the
+// MNIST handwritten-digit files (the IDX format of LeCun et al.). The decoding itself is in
+// image_decode.h.
 #include <filesystem>
 
 #include "animkit/core/image.h"
@@ -8,9 +9,9 @@
 
 namespace animkit {
 
-/// Reads an image as 8-bit gray (colour is averaged by stb_image's luma weights). Errors name
-/// the file: missing, empty, not an image or truncated (with stb_image's reason), larger than
-/// kMaxImageSide on a side (checked before decoding).
+/// Reads an image as 8-bit gray (see decode_gray_image). Errors name the file: missing, a
+/// folder, empty, not a supported format, truncated or corrupt (with the reason), larger than
+/// kMaxImageSide on a side (checked from the header, before decoding).
 Result<GrayImage> read_gray_image(const std::filesystem::path& path);
 
 /// Image `index` of an MNIST IDX image file (magic 0x00000803: unsigned bytes, 3 dimensions:

@@ -1,5 +1,5 @@
 #pragma once
-// PNG files through stb_image_write / stb_image (Debian's libstb).
+// PNG files written through libpng; pictures read back through image_decode.h.
 #include <filesystem>
 
 #include "animkit/core/image.h"
@@ -14,7 +14,8 @@ Result<void> write_png(const std::filesystem::path& path, const Image& image);
 /// Encodes `image` as PNG bytes in memory.
 Result<std::vector<unsigned char>> encode_png(const Image& image);
 
-/// Reads a PNG (or any format stb_image reads) as RGBA. Errors name the file and the reason.
+/// Reads a PNG (or any format decode_rgba_image reads) as RGBA. Errors name the file and the
+/// reason (see decode_rgba_image, and read_gray_image for the file's own).
 Result<Image> read_image(const std::filesystem::path& path);
 
 }  // namespace animkit
