@@ -48,7 +48,7 @@ test-sanitize: deps
 test: test-release test-sanitize
 
 fuzz-deps:
-	bash scripts/install-fuzz-deps.sh
+	bash scripts/install-deps.sh --fuzz
 
 # The library and the fuzz targets only (a Debug build at -O1: assertions are checked too),
 # with libFuzzer, ASan and UBSan; then every target runs FUZZ_SECONDS over its corpus and kept

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Installs animkit's build and test dependencies from Debian 12's own packages.
+# Installs animkit's build and test dependencies from Debian 12's own packages. With --fuzz,
+# also what `make fuzz` needs: clang 16 and its runtime libraries (libFuzzer, ASan, UBSan), kept
+# apart so `make demo` and `make test` stay light.
 # Idempotent: when every package is already installed it does nothing (no network).
 set -euo pipefail
 
@@ -20,6 +22,9 @@ packages=(
   # The SVG tests check drawing.svg with a real XML parser (xmllint).
   libxml2-utils
 )
+if [ "${1:-}" = "--fuzz" ]; then
+  packages=(clang-16 libclang-rt-16-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
