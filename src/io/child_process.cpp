@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <thread>
 
 extern char** environ;
 
@@ -78,6 +79,58 @@ Result<std::string> run_program_output(const std::vector<std::string>& argv) {
   const int status = wait_program(*pid);
   if (status != 0) return fail(argv[0] + " exited with status " + std::to_string(status));
   return text;
+}
+
+struct PipeCollector::State {
+  int read_end = -1, write_end = -1;
+  std::thread reader;
+  std::string text;
+
+  ~State() {
+    if (write_end >= 0) ::close(write_end);
+    if (reader.joinable()) reader.join();
+    if (read_end >= 0) ::close(read_end);
+  }
+};
+
+PipeCollector::PipeCollector() : state_(std::make_unique<State>()) {}
+PipeCollector::PipeCollector(PipeCollector&&) noexcept = default;
+PipeCollector& PipeCollector::operator=(PipeCollector&&) noexcept = default;
+PipeCollector::~PipeCollector() = default;
+
+Result<PipeCollector> PipeCollector::open() {
+  PipeCollector collector;
+  int ends[2];
+  if (::pipe2(ends, O_CLOEXEC) != 0) return fail(std::string("pipe: ") + std::strerror(errno));
+  collector.state_->read_end = ends[0];
+  collector.state_->write_end = ends[1];
+  return collector;
+}
+
+int PipeCollector::child_end() const {
+  return state_->write_end;
+}
+
+void PipeCollector::start() {
+  State& s = *state_;
+  ::close(s.write_end);
+  s.write_end = -1;
+  s.reader = std::thread([&s] {
+    constexpr std::size_t kKeep = 16384;
+    char buffer[4096];
+    for (;;) {
+      const ssize_t n = ::read(s.read_end, buffer, sizeof buffer);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      s.text.append(buffer, static_cast<std::size_t>(n));
+      if (s.text.size() > 2 * kKeep) s.text.erase(0, s.text.size() - kKeep);
+    }
+  });
+}
+
+std::string PipeCollector::finish() {
+  if (state_->reader.joinable()) state_->reader.join();
+  return state_->text;
 }
 
 }  // namespace animkit::detail

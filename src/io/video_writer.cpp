@@ -23,9 +23,9 @@ namespace animkit {
 
 namespace {
 
-// The last non-empty line of ffmpeg's error log, or "".
-std::string last_line(const std::filesystem::path& log) {
-  std::ifstream in(log);
+// The last non-empty line of what ffmpeg printed, or "".
+std::string last_line(const std::string& text) {
+  std::istringstream in(text);
   std::string line, last;
   while (std::getline(in, line)) {
     if (!line.empty()) last = line;
@@ -71,9 +71,8 @@ VideoWriter::VideoWriter(VideoWriter&& other) noexcept
       ffmpeg_(std::exchange(other.ffmpeg_, 0)),
       path_(std::move(other.path_)),
       temporary_(std::move(other.temporary_)),
-      log_(std::move(other.log_)),
       temporary_cleanup_(std::move(other.temporary_cleanup_)),
-      log_cleanup_(std::move(other.log_cleanup_)),
+      errors_(std::move(other.errors_)),
       child_(std::move(other.child_)),
       ffprobe_(std::move(other.ffprobe_)),
       width_(other.width_),
@@ -82,6 +81,12 @@ VideoWriter::VideoWriter(VideoWriter&& other) noexcept
       gif_(other.gif_),
       gif_resampled_(other.gif_resampled_),
       previous_sigpipe_(std::exchange(other.previous_sigpipe_, SIG_ERR)) {}
+
+struct VideoWriter::ErrorLog {
+  detail::PipeCollector collector;
+};
+
+VideoWriter::VideoWriter() = default;
 
 VideoWriter::~VideoWriter() {
   abandon();
@@ -101,9 +106,8 @@ void VideoWriter::abandon() {
   child_.release();
   restore_sigpipe();
   if (!temporary_.empty()) ::unlink(temporary_.c_str());
-  if (!log_.empty()) ::unlink(log_.c_str());
   temporary_cleanup_.release();
-  log_cleanup_.release();
+  errors_.reset();
 }
 
 Result<VideoWriter> VideoWriter::open(const std::filesystem::path& path, int width, int height,
@@ -149,11 +153,9 @@ Result<VideoWriter> VideoWriter::open(const std::filesystem::path& path, int wid
   ::close(video_fd);
   writer.temporary_ = temporary;
   writer.temporary_cleanup_ = CleanupHandle(temporary);
-  const std::filesystem::path log = unique_sibling(path, "log");
-  const int log_fd = create_exclusive(log);
-  if (log_fd < 0) return fail(cannot_write(path, std::strerror(errno)));
-  writer.log_ = log;
-  writer.log_cleanup_ = CleanupHandle(log);
+  auto errors = detail::PipeCollector::open();
+  if (!errors) return fail(cannot_write(path, errors.error().message));
+  writer.errors_ = std::make_unique<ErrorLog>(ErrorLog{std::move(*errors)});
 
   std::vector<std::string> argv = {ffmpeg->string(), "-hide_banner", "-loglevel", "error",
                                    "-nostdin", "-y", "-f", "rawvideo", "-pix_fmt", "rgba", "-s",
@@ -173,13 +175,10 @@ Result<VideoWriter> VideoWriter::open(const std::filesystem::path& path, int wid
   }
   argv.push_back("file:" + temporary.string());  // "file:": a name is never a protocol
   int frames_pipe[2];
-  if (::pipe2(frames_pipe, O_CLOEXEC) != 0) {
-    ::close(log_fd);
-    return fail(cannot_write(path, std::strerror(errno)));
-  }
-  auto pid = detail::spawn_program(argv, frames_pipe[0], -1, log_fd);
+  if (::pipe2(frames_pipe, O_CLOEXEC) != 0) return fail(cannot_write(path, std::strerror(errno)));
+  auto pid = detail::spawn_program(argv, frames_pipe[0], -1, writer.errors_->collector.child_end());
   ::close(frames_pipe[0]);
-  ::close(log_fd);
+  writer.errors_->collector.start();
   if (!pid) {
     ::close(frames_pipe[1]);
     return fail(cannot_write(path, pid.error().message));
@@ -208,7 +207,7 @@ Result<void> VideoWriter::add_frame(const Image& frame) {
     if (n <= 0) {
       ::close(std::exchange(pipe_, -1));
       detail::wait_program(std::exchange(ffmpeg_, 0));
-      const std::string reason = last_line(log_);
+      const std::string reason = last_line(errors_->collector.finish());
       abandon();
       return fail(path_.string() + ": ffmpeg stopped taking frames (" +
                   sanitize_message(reason.empty() ? "no message" : reason, 300) + ")");
@@ -246,8 +245,8 @@ Result<void> VideoWriter::finish() {
   const int status = detail::wait_program(std::exchange(ffmpeg_, 0));
   child_.release();
   restore_sigpipe();
-  // With -loglevel error, anything in the log is an error, even when ffmpeg exits 0.
-  const std::string reason = last_line(log_);
+  // With -loglevel error, anything printed is an error, even when ffmpeg exits 0.
+  const std::string reason = last_line(errors_->collector.finish());
   Result<void> outcome;
   if (status != 0 || !reason.empty()) {
     outcome = fail(path_.string() + ": ffmpeg failed (" +
@@ -269,7 +268,7 @@ Result<void> VideoWriter::finish() {
   } else if (outcome) {
     temporary_.clear();  // renamed into place: not ours to remove any more
   }
-  abandon();  // removes the log, and the temporary unless it became the video
+  abandon();  // removes the temporary unless it became the video
   return outcome;
 }
 

@@ -1,13 +1,14 @@
 #pragma once
 // Videos (.mp4 H.264 or .gif) through the ffmpeg program, fed raw frames on a pipe. Written
 // whole or not at all: ffmpeg writes a temporary file beside the video (temporary_files.h),
-// which is checked (ffmpeg's exit status, its error log, and ffprobe counting the frames in
+// which is checked (ffmpeg's exit status, its error output, and ffprobe counting the frames in
 // the finished file) and only then renamed into place. The check matters: ffmpeg 5.1 exits 0
 // after "Error writing trailer: No space left on device", leaving an MP4 without its index.
 #include <sys/types.h>
 
 #include <csignal>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include "animkit/core/image.h"
@@ -34,7 +35,7 @@ class VideoWriter {
 
   VideoWriter(VideoWriter&& other) noexcept;
   VideoWriter& operator=(VideoWriter&&) = delete;
-  /// Abandons an unfinished video: stops ffmpeg and removes the temporary files.
+  /// Abandons an unfinished video: stops ffmpeg and removes the temporary file.
   ~VideoWriter();
 
   /// Sends one frame; it must have the size given to open(). Errors: a wrong size, ffmpeg gone.
@@ -45,15 +46,17 @@ class VideoWriter {
   int frames() const { return frames_; }
 
  private:
-  VideoWriter() = default;
+  VideoWriter();
   void abandon();
   void restore_sigpipe();
   Result<void> check_complete() const;
 
   int pipe_ = -1;  // ffmpeg's standard input
   pid_t ffmpeg_ = 0;
-  std::filesystem::path path_, temporary_, log_;
-  CleanupHandle temporary_cleanup_, log_cleanup_;
+  std::filesystem::path path_, temporary_;
+  CleanupHandle temporary_cleanup_;
+  struct ErrorLog;                    // ffmpeg's standard error, collected in memory
+  std::unique_ptr<ErrorLog> errors_;
   ChildHandle child_;
   std::filesystem::path ffprobe_;
   int width_ = 0, height_ = 0, frames_ = 0;
