@@ -14,12 +14,12 @@
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/parameter_ranges.h"
+#include "animkit/core/quote.h"
 #include "animkit/core/validation.h"
 #include "animkit/io/atomic_write.h"
 #include "animkit/io/cloth_report.h"
 #include "animkit/io/point_cache.h"
 #include "animkit/scene/cloth_scene.h"
-#include "animkit/core/quote.h"
 #include "cli_errors.h"
 #include "run_output.h"
 
@@ -60,8 +60,8 @@ class ProgressLine {
 
 }  // namespace
 
-int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out,
-                 const std::string& video, const std::function<Result<void>()>& commit) {
+int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const std::string& video,
+                 const std::function<Result<void>()>& commit) {
   if (auto error = args.grid.validate()) return report_error(error->message);
   if (!kTimeStepRange.contains(args.dt)) {
     return report_error(kTimeStepRange.refusal("--dt (seconds)", args.dt));
@@ -228,7 +228,7 @@ std::function<int()> add_cloth_command(CLI::App& app) {
       ->capture_default_str();
   cloth->add_option("--out", args->out,
                     "Folder for metrics.json, cloth.obj, cloth.pc2 and final.png (created if "
-                    "needed)");
+                    "needed; replaced whole when the run ends, see the README)");
   add_picture_options(*cloth, args->pictures, "final.png");
   return [args] { return run_cloth(*args); };
 }

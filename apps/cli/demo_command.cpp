@@ -145,7 +145,9 @@ std::function<int()> add_demo_command(CLI::App& app) {
       "Runs the built-in default scenes (the lab's arm drawing every shape with CCD and "
       "FABRIK, and the lab's cloth), prints summary tables and writes every output to a "
       "folder.");
-  demo->add_option("--out", args->out, "Output folder (created if needed)")->capture_default_str();
+  demo->add_option("--out", args->out,
+                   "Output folder (created if needed; replaced whole when the run ends)")
+      ->capture_default_str();
   demo->add_flag("--no-picture", args->no_picture,
                  "Write no PNG pictures (drawing.png, final.png): no OpenGL needed");
   return [args] { return run(*args); };

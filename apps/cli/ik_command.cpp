@@ -5,13 +5,13 @@
 #include <memory>
 #include <string>
 
+#include "animkit/core/quote.h"
 #include "animkit/core/validation.h"
 #include "animkit/io/atomic_write.h"
 #include "animkit/io/drawing_source.h"
 #include "animkit/io/ik_report.h"
 #include "animkit/kinematics/chain.h"
 #include "animkit/kinematics/drawing_session.h"
-#include "animkit/core/quote.h"
 #include "cli_errors.h"
 #include "drawing_args.h"
 #include "ik_pictures.h"
@@ -204,7 +204,7 @@ std::function<int()> add_ik_command(CLI::App& app) {
       ->excludes(cold_start);
   ik->add_option("--out", args->out,
                  "Folder for metrics.json, path.csv, drawing.svg and drawing.png (created if "
-                 "needed)");
+                 "needed; replaced whole when the run ends, see the README)");
   add_picture_options(*ik, args->pictures, "drawing.png");
   ik->add_option("--picture-frame", args->picture_frame,
                  "Show frame N (from 0) in drawing.png instead of the last: the arm mid-drawing");

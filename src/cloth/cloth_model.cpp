@@ -47,7 +47,8 @@ std::optional<Error> ClothDesc::validate() const {
       return Error{particle(i) + " velocity " + to_string(p.velocity) + " is beyond +-" +
                    format_number(kSpeedRange.max)};
     }
-    if (!kMassRange.contains(p.mass)) return Error{kMassRange.refusal(particle(i) + " mass", p.mass)};
+    if (!kMassRange.contains(p.mass))
+      return Error{kMassRange.refusal(particle(i) + " mass", p.mass)};
   }
   const int n = static_cast<int>(particles.size());
   for (std::size_t s = 0; s < springs.size(); ++s) {

@@ -172,8 +172,8 @@ Result<StepReport> ClothSimulator::step(double dt) {
     for (int k = 0; k < report.substeps; ++k) s.implicit_euler->step(s.state, h, report, external);
   }
   std::optional<std::string> problem = divergence(s.state);
-  if (!problem && !(std::isfinite(report.gradient_norm_start) &&
-                    std::isfinite(report.gradient_norm_end))) {
+  if (!problem &&
+      !(std::isfinite(report.gradient_norm_start) && std::isfinite(report.gradient_norm_end))) {
     // Finite positions from a non-finite gradient are not a result: the step could not be
     // computed (never converged, whatever the comparisons with infinity said).
     problem = "the incremental potential's gradient is not finite";

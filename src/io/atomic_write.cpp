@@ -15,14 +15,12 @@ namespace animkit {
 namespace {
 
 std::string cannot_write(const std::filesystem::path& path, int error) {
-  return "cannot write " + path.string() + ": " +
-         std::strerror(error != 0 ? error : EIO);
+  return "cannot write " + path.string() + ": " + std::strerror(error != 0 ? error : EIO);
 }
 
 }  // namespace
 
-AtomicFile::AtomicFile(std::FILE* file, std::filesystem::path path,
-                       std::filesystem::path temporary)
+AtomicFile::AtomicFile(std::FILE* file, std::filesystem::path path, std::filesystem::path temporary)
     : file_(file), path_(std::move(path)), temporary_(std::move(temporary)), cleanup_(temporary_) {}
 
 AtomicFile::AtomicFile(AtomicFile&& other) noexcept
@@ -49,8 +47,8 @@ Result<AtomicFile> AtomicFile::create(const std::filesystem::path& path) {
   const std::filesystem::path temporary = unique_sibling(path, "tmp");
   // O_EXCL and O_NOFOLLOW: a file or link planted at the temporary's name is never written
   // through; the name is unique, so a clash is an attack or a bug, and an error either way.
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
-                        0666);
+  const int fd =
+      ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
   if (fd < 0) return fail(cannot_write(path, errno));
   std::FILE* file = ::fdopen(fd, "wb");
   if (file == nullptr) {

@@ -58,21 +58,23 @@ std::string hex(std::uint32_t v) {
 Result<Image> decode_bmp(std::span<const std::uint8_t> bytes, std::string_view name) {
   const std::size_t size = bytes.size();
   if (size < 18) {
-    return truncated(name, "BMP", "the file has " + std::to_string(size) +
-                                      " bytes, too few for the headers");
+    return truncated(name, "BMP",
+                     "the file has " + std::to_string(size) + " bytes, too few for the headers");
   }
   const std::uint64_t pixel_offset = le32(bytes, 10);
   const std::uint32_t header_size = le32(bytes, 14);
   const bool core_header = header_size == 12;  // OS/2 BITMAPCOREHEADER: 16-bit sizes
   if (!core_header && header_size != 40 && header_size != 52 && header_size != 56 &&
       header_size != 108 && header_size != 124) {
-    return corrupt(name, "BMP", "info header of " + std::to_string(header_size) +
-                                    " bytes, expected 12, 40, 52, 56, 108 or 124");
+    return corrupt(name, "BMP",
+                   "info header of " + std::to_string(header_size) +
+                       " bytes, expected 12, 40, 52, 56, 108 or 124");
   }
   if (14 + header_size > size) {
-    return truncated(name, "BMP", "the " + std::to_string(header_size) +
-                                      "-byte info header does not fit in the file's " +
-                                      std::to_string(size) + " bytes");
+    return truncated(name, "BMP",
+                     "the " + std::to_string(header_size) +
+                         "-byte info header does not fit in the file's " + std::to_string(size) +
+                         " bytes");
   }
   std::int64_t width = 0, height = 0;
   std::uint32_t planes = 0, bpp = 0, compression = kRgb, colors_used = 0;
@@ -113,12 +115,13 @@ Result<Image> decode_bmp(std::span<const std::uint8_t> bytes, std::string_view n
   if (compression != kRgb && !bitfields) {
     return corrupt(name, "BMP", "unknown compression " + std::to_string(compression));
   }
-  const bool depth_ok = bitfields ? (bpp == 16 || bpp == 32)
-                                  : (bpp == 1 || bpp == 4 || bpp == 8 || bpp == 16 || bpp == 24 ||
-                                     bpp == 32);
+  const bool depth_ok =
+      bitfields ? (bpp == 16 || bpp == 32)
+                : (bpp == 1 || bpp == 4 || bpp == 8 || bpp == 16 || bpp == 24 || bpp == 32);
   if (!depth_ok) {
-    return corrupt(name, "BMP", std::to_string(bpp) + " bits per pixel" +
-                                    (bitfields ? " with BI_BITFIELDS (expected 16 or 32)" : ""));
+    return corrupt(name, "BMP",
+                   std::to_string(bpp) + " bits per pixel" +
+                       (bitfields ? " with BI_BITFIELDS (expected 16 or 32)" : ""));
   }
 
   // Colour masks: in the header from version 2 on, else right after a 40-byte header.
@@ -128,8 +131,9 @@ Result<Image> decode_bmp(std::span<const std::uint8_t> bytes, std::string_view n
     const int count = compression == kAlphaBitfields || header_size >= 56 ? 4 : 3;
     const std::size_t at = header_size == 40 ? tables : 14 + 40;
     if (at + 4 * count > size) {
-      return truncated(name, "BMP", "the colour masks do not fit in the file's " +
-                                        std::to_string(size) + " bytes");
+      return truncated(
+          name, "BMP",
+          "the colour masks do not fit in the file's " + std::to_string(size) + " bytes");
     }
     masks = {0, 0, 0, 0};
     for (int i = 0; i < count; ++i) masks[i] = le32(bytes, at + 4 * i);
@@ -147,14 +151,16 @@ Result<Image> decode_bmp(std::span<const std::uint8_t> bytes, std::string_view n
   if (bpp <= 8) {
     const std::uint64_t count = colors_used != 0 ? colors_used : (1u << bpp);
     if (count > (1u << bpp)) {
-      return corrupt(name, "BMP", std::to_string(count) + " palette colours for " +
-                                      std::to_string(bpp) + "-bit pixels");
+      return corrupt(
+          name, "BMP",
+          std::to_string(count) + " palette colours for " + std::to_string(bpp) + "-bit pixels");
     }
     const std::size_t entry = core_header ? 3 : 4;
     if (tables + count * entry > size) {
-      return truncated(name, "BMP", "the palette of " + std::to_string(count) +
-                                        " colours does not fit in the file's " +
-                                        std::to_string(size) + " bytes");
+      return truncated(name, "BMP",
+                       "the palette of " + std::to_string(count) +
+                           " colours does not fit in the file's " + std::to_string(size) +
+                           " bytes");
     }
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t at = tables + i * entry;
@@ -163,9 +169,9 @@ Result<Image> decode_bmp(std::span<const std::uint8_t> bytes, std::string_view n
     tables += count * entry;
   }
   if (pixel_offset < tables) {
-    return corrupt(name, "BMP", "the pixels start at byte " + std::to_string(pixel_offset) +
-                                    ", inside the headers that end at byte " +
-                                    std::to_string(tables));
+    return corrupt(name, "BMP",
+                   "the pixels start at byte " + std::to_string(pixel_offset) +
+                       ", inside the headers that end at byte " + std::to_string(tables));
   }
   // Rows are padded to 4 bytes; the last row's padding may be missing without losing pixels.
   const std::uint64_t row_bits = static_cast<std::uint64_t>(width) * bpp;
@@ -173,10 +179,10 @@ Result<Image> decode_bmp(std::span<const std::uint8_t> bytes, std::string_view n
   const std::uint64_t needed =
       pixel_offset + stride * static_cast<std::uint64_t>(height - 1) + (row_bits + 7) / 8;
   if (needed > size) {
-    return truncated(name, "BMP", std::to_string(width) + "x" + std::to_string(height) +
-                                      " pixels at " + std::to_string(bpp) + " bits need " +
-                                      std::to_string(needed) + " bytes, the file has " +
-                                      std::to_string(size));
+    return truncated(name, "BMP",
+                     std::to_string(width) + "x" + std::to_string(height) + " pixels at " +
+                         std::to_string(bpp) + " bits need " + std::to_string(needed) +
+                         " bytes, the file has " + std::to_string(size));
   }
 
   Image image(static_cast<int>(width), static_cast<int>(height));
@@ -191,9 +197,10 @@ Result<Image> decode_bmp(std::span<const std::uint8_t> bytes, std::string_view n
         const int shift = 8 - static_cast<int>(bpp) * (x % per_byte + 1);
         const std::size_t index = (in[x / per_byte] >> shift) & ((1u << bpp) - 1);
         if (index >= palette.size()) {
-          return corrupt(name, "BMP", "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                          ") uses colour " + std::to_string(index) +
-                                          " of a palette of " + std::to_string(palette.size()));
+          return corrupt(name, "BMP",
+                         "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                             ") uses colour " + std::to_string(index) + " of a palette of " +
+                             std::to_string(palette.size()));
         }
         p = palette[index];
       } else if (bpp == 24) {

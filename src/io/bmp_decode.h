@@ -1,7 +1,7 @@
 #pragma once
-// Decoding BMP by our own strict reader: BI_RGB 1/4/8/16/24/32-bit and BI_BITFIELDS 16/32-bit, into 8-bit RGBA
-// (alpha as stored). Internal: callers go through animkit/io/image_decode.h, which picks the
-// decoder from the file's first bytes.
+// Decoding BMP by our own strict reader: BI_RGB 1/4/8/16/24/32-bit and BI_BITFIELDS 16/32-bit, into
+// 8-bit RGBA (alpha as stored). Internal: callers go through animkit/io/image_decode.h, which picks
+// the decoder from the file's first bytes.
 #include <cstdint>
 #include <span>
 #include <string_view>

@@ -1,13 +1,13 @@
 #include "jpeg_decode.h"
 
 // jpeglib.h needs size_t and FILE declared first.
-#include <cstdio>
-#include <csetjmp>
-#include <cstring>
-#include <string>
-
 #include <jerror.h>
 #include <jpeglib.h>
+
+#include <csetjmp>
+#include <cstdio>
+#include <cstring>
+#include <string>
 
 #include "animkit/trajectory/image_strokes.h"
 #include "image_limits.h"
@@ -26,7 +26,7 @@ struct JpegErrors {
   jpeg_error_mgr mgr;  // first, so libjpeg's cinfo->err points at the whole struct
   std::jmp_buf jump;
   char message[JMSG_LENGTH_MAX];
-  bool truncated;       // "Premature end of JPEG file": libjpeg would fill the rest with gray
+  bool truncated;  // "Premature end of JPEG file": libjpeg would fill the rest with gray
   bool too_many_scans;
 };
 
@@ -95,7 +95,8 @@ Outcome run_libjpeg(jpeg_decompress_struct* cinfo, JpegErrors* errors, jpeg_prog
   }
   *out = Image(static_cast<int>(cinfo->output_width), static_cast<int>(cinfo->output_height));
   while (cinfo->output_scanline < cinfo->output_height) {
-    JSAMPROW row = reinterpret_cast<JSAMPROW>(&out->at(0, static_cast<int>(cinfo->output_scanline)));
+    JSAMPROW row =
+        reinterpret_cast<JSAMPROW>(&out->at(0, static_cast<int>(cinfo->output_scanline)));
     jpeg_read_scanlines(cinfo, &row, 1);
   }
   if (cmyk) {

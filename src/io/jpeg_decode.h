@@ -1,7 +1,7 @@
 #pragma once
-// Decoding JPEG through libjpeg-turbo (the libjpeg API): baseline and progressive, gray, YCbCr, CMYK, into 8-bit RGBA
-// (alpha as stored). Internal: callers go through animkit/io/image_decode.h, which picks the
-// decoder from the file's first bytes.
+// Decoding JPEG through libjpeg-turbo (the libjpeg API): baseline and progressive, gray, YCbCr,
+// CMYK, into 8-bit RGBA (alpha as stored). Internal: callers go through animkit/io/image_decode.h,
+// which picks the decoder from the file's first bytes.
 #include <cstdint>
 #include <span>
 #include <string_view>

@@ -20,9 +20,9 @@ struct PngState {
   const std::uint8_t* data;
   std::size_t size;
   std::size_t offset;
-  bool ran_out;          // the read callback was asked for bytes past the end of the file
-  char error[200];       // libpng's error message
-  char damage[200];      // the first warning that means lost or wrong pixels
+  bool ran_out;      // the read callback was asked for bytes past the end of the file
+  char error[200];   // libpng's error message
+  char damage[200];  // the first warning that means lost or wrong pixels
 };
 
 void read_callback(png_structp png, png_bytep out, png_size_t count) {
@@ -103,15 +103,15 @@ std::uint32_t big_endian(const std::uint8_t* b) {
 Result<Image> decode_png(std::span<const std::uint8_t> bytes, std::string_view name) {
   // The size from IHDR (always the first chunk) before libpng allocates anything.
   if (bytes.size() >= 24 && std::memcmp(bytes.data() + 12, "IHDR", 4) == 0) {
-    if (auto ok = check_image_side(big_endian(bytes.data() + 16), big_endian(bytes.data() + 20),
-                                   name);
+    if (auto ok =
+            check_image_side(big_endian(bytes.data() + 16), big_endian(bytes.data() + 20), name);
         !ok) {
       return fail(ok.error().message);
     }
   }
   PngState state{bytes.data(), bytes.size(), 0, false, {}, {}};
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &state, error_callback,
-                                           warning_callback);
+  png_structp png =
+      png_create_read_struct(PNG_LIBPNG_VER_STRING, &state, error_callback, warning_callback);
   if (png == nullptr) return fail(std::string(name) + ": libpng could not start");
   png_infop info = png_create_info_struct(png);
   if (info == nullptr) {
@@ -125,7 +125,8 @@ Result<Image> decode_png(std::span<const std::uint8_t> bytes, std::string_view n
   png_destroy_read_struct(&png, &info, nullptr);
   switch (outcome) {
     case Outcome::decoded:
-      if (state.damage[0] != '\0') return corrupt(name, "PNG", std::string("libpng: ") + state.damage);
+      if (state.damage[0] != '\0')
+        return corrupt(name, "PNG", std::string("libpng: ") + state.damage);
       return image;
     case Outcome::too_large:
       if (auto ok = check_image_side(width, height, name); !ok) return fail(ok.error().message);

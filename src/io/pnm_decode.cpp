@@ -62,8 +62,8 @@ class PnmReader {
       return corrupt(name_, format_, "expected " + what() + ", found " + quote_input(token));
     }
     if (value > limit) {
-      return corrupt(name_, format_, what() + " is " + std::to_string(value) + ", above " +
-                                         std::to_string(limit));
+      return corrupt(name_, format_,
+                     what() + " is " + std::to_string(value) + ", above " + std::to_string(limit));
     }
     return static_cast<std::uint32_t>(value);
   }
@@ -137,17 +137,18 @@ Result<Image> decode_pnm(std::span<const std::uint8_t> bytes, std::string_view n
     const std::uint64_t needed =
         bitmap ? (std::uint64_t{*width} + 7) / 8 * *height : samples * sample_bytes;
     if (in.remaining() < needed) {
-      return truncated(name, format, size + " need " + std::to_string(needed) +
-                                         " bytes after the header, only " +
-                                         std::to_string(in.remaining()) + " follow it");
+      return truncated(name, format,
+                       size + " need " + std::to_string(needed) + " bytes after the header, only " +
+                           std::to_string(in.remaining()) + " follow it");
     }
   } else {
     // At least one digit a sample, and whitespace between numbers (not between P1's bits).
     const std::uint64_t needed = bitmap ? samples : 2 * samples - 1;
     if (in.remaining() < needed) {
-      return truncated(name, format, size + " need at least " + std::to_string(needed) +
-                                         " bytes of numbers after the header, only " +
-                                         std::to_string(in.remaining()) + " follow it");
+      return truncated(name, format,
+                       size + " need at least " + std::to_string(needed) +
+                           " bytes of numbers after the header, only " +
+                           std::to_string(in.remaining()) + " follow it");
     }
   }
 
@@ -162,12 +163,14 @@ Result<Image> decode_pnm(std::span<const std::uint8_t> bytes, std::string_view n
         if (kind == 4) {
           pixel[c] = (raster[y * row_bytes + x / 8] >> (7 - x % 8)) & 1;
         } else if (binary) {
-          pixel[c] = maxval > 255 ? (std::uint32_t{raster[2 * sample]} << 8) | raster[2 * sample + 1]
-                                  : raster[sample];
+          pixel[c] = maxval > 255
+                         ? (std::uint32_t{raster[2 * sample]} << 8) | raster[2 * sample + 1]
+                         : raster[sample];
           if (pixel[c] > maxval) {
-            return corrupt(name, format, "sample " + std::to_string(sample + 1) + " is " +
-                                             std::to_string(pixel[c]) + ", above the maxval " +
-                                             std::to_string(maxval));
+            return corrupt(name, format,
+                           "sample " + std::to_string(sample + 1) + " is " +
+                               std::to_string(pixel[c]) + ", above the maxval " +
+                               std::to_string(maxval));
           }
         } else {
           auto value = bitmap ? in.bit(sample + 1) : in.number("", maxval, sample + 1);

@@ -1,8 +1,8 @@
 #include "animkit/io/staged_folder.h"
 
 #include <fcntl.h>
-#include <sys/stat.h>
 #include <stdio.h>  // renameat2 (glibc >= 2.28)
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -29,8 +29,8 @@ namespace fs = std::filesystem;
 
 // What earlier versions wrote, before folders listed their own entries.
 constexpr std::array<std::string_view, 10> kEarlierOutputNames = {
-    "metrics.json", "path.csv", "drawing.svg", "drawing.png", "summary.csv",
-    "cloth.obj",    "cloth.pc2", "final.png",  "ik",          "cloth"};
+    "metrics.json", "path.csv",  "drawing.svg", "drawing.png", "summary.csv",
+    "cloth.obj",    "cloth.pc2", "final.png",   "ik",          "cloth"};
 
 std::string shown(const fs::path& path) {
   return path.string();
@@ -133,12 +133,14 @@ Result<StagedFolder> StagedFolder::begin(const fs::path& requested) {
   if (error) return fail("output folder " + shown(requested) + ": " + error.message());
   if (!target.has_filename()) target = target.parent_path();  // "out/" is "out"
   if (target == target.root_path()) {
-    return fail("output folder " + shown(requested) + " is the root folder; give the run a "
+    return fail("output folder " + shown(requested) +
+                " is the root folder; give the run a "
                 "folder of its own");
   }
   const fs::path cwd = fs::weakly_canonical(fs::current_path(error), error);
   if (!error) {
-    const auto [diverge, rest] = std::mismatch(target.begin(), target.end(), cwd.begin(), cwd.end());
+    const auto [diverge, rest] =
+        std::mismatch(target.begin(), target.end(), cwd.begin(), cwd.end());
     if (diverge == target.end()) {
       return fail("output folder " + shown(requested) +
                   " is the current folder or contains it; a run replaces its folder whole, so "
@@ -148,7 +150,8 @@ Result<StagedFolder> StagedFolder::begin(const fs::path& requested) {
   if (auto ok = check_target(target); !ok) return fail(ok.error().message);
   const fs::path parent = target.parent_path();
   fs::create_directories(parent, error);
-  if (error) return fail("cannot create output folder " + shown(requested) + ": " + error.message());
+  if (error)
+    return fail("cannot create output folder " + shown(requested) + ": " + error.message());
   remove_stale_temporaries(parent);
   const fs::path staging = unique_sibling(target, "staging");
   if (::mkdir(staging.c_str(), 0777) != 0) {
@@ -161,7 +164,8 @@ Result<fs::path> StagedFolder::redirect(const fs::path& path) const {
   std::error_code error;
   const fs::path full = fs::weakly_canonical(fs::absolute(path, error), error);
   if (error) return path;
-  const auto [diverge, rest] = std::mismatch(target_.begin(), target_.end(), full.begin(), full.end());
+  const auto [diverge, rest] =
+      std::mismatch(target_.begin(), target_.end(), full.begin(), full.end());
   if (diverge != target_.end()) return path;  // not inside the target
   if (full.parent_path() == target_) return staging_ / full.filename();
   return fail(shown(path) + " is inside a subfolder of the output folder " + shown(target_) +

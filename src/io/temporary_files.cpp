@@ -6,10 +6,10 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <csignal>
-#include <cerrno>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <map>

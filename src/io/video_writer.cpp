@@ -157,10 +157,22 @@ Result<VideoWriter> VideoWriter::open(const std::filesystem::path& path, int wid
   if (!errors) return fail(cannot_write(path, errors.error().message));
   writer.errors_ = std::make_unique<ErrorLog>(ErrorLog{std::move(*errors)});
 
-  std::vector<std::string> argv = {ffmpeg->string(), "-hide_banner", "-loglevel", "error",
-                                   "-nostdin", "-y", "-f", "rawvideo", "-pix_fmt", "rgba", "-s",
-                                   std::to_string(width) + "x" + std::to_string(height), "-r",
-                                   format_number(fps), "-i", "pipe:0"};
+  std::vector<std::string> argv = {ffmpeg->string(),
+                                   "-hide_banner",
+                                   "-loglevel",
+                                   "error",
+                                   "-nostdin",
+                                   "-y",
+                                   "-f",
+                                   "rawvideo",
+                                   "-pix_fmt",
+                                   "rgba",
+                                   "-s",
+                                   std::to_string(width) + "x" + std::to_string(height),
+                                   "-r",
+                                   format_number(fps),
+                                   "-i",
+                                   "pipe:0"};
   if (writer.gif_) {
     // GIF delays are whole hundredths of a second and players stretch 1/100 s to 1/10 s, so
     // above 50 fps frames are dropped to 50 fps (2/100 s each) to keep the timing. One
@@ -222,10 +234,9 @@ Result<void> VideoWriter::add_frame(const Image& frame) {
 Result<void> VideoWriter::check_complete() const {
   // ffprobe decodes the container's index and counts the video packets: a file cut short
   // (no MP4 moov atom, a GIF missing frames) either fails here or counts short.
-  auto counted = detail::run_program_output({ffprobe_.string(), "-v", "error", "-count_packets",
-                                            "-select_streams", "v:0", "-show_entries",
-                                            "stream=nb_read_packets", "-of", "csv=p=0",
-                                            "file:" + temporary_.string()});
+  auto counted = detail::run_program_output(
+      {ffprobe_.string(), "-v", "error", "-count_packets", "-select_streams", "v:0",
+       "-show_entries", "stream=nb_read_packets", "-of", "csv=p=0", "file:" + temporary_.string()});
   if (!counted) return fail(path_.string() + ": the finished file cannot be read back");
   char* end = nullptr;
   const long packets = std::strtol(counted->c_str(), &end, 10);
@@ -249,11 +260,10 @@ Result<void> VideoWriter::finish() {
   const std::string reason = last_line(errors_->collector.finish());
   Result<void> outcome;
   if (status != 0 || !reason.empty()) {
-    outcome = fail(path_.string() + ": ffmpeg failed (" +
-                   sanitize_message(reason.empty() ? "exit status " + std::to_string(status)
-                                                   : reason,
-                                    300) +
-                   ")");
+    outcome = fail(
+        path_.string() + ": ffmpeg failed (" +
+        sanitize_message(reason.empty() ? "exit status " + std::to_string(status) : reason, 300) +
+        ")");
   } else {
     outcome = check_complete();
   }

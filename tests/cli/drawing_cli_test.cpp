@@ -181,8 +181,9 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(
         BadDrawing{"--image DIR/missing.png", "DIR/missing.png: no such file"},
         BadDrawing{"--image DIR/empty.png", "DIR/empty.png: the file is empty"},
-        BadDrawing{"--image DIR/notes.png", "DIR/notes.png: not an image format animkit reads (supported: PNG, JPEG, BMP, "
-                                              "PNM/PGM/PPM/PBM)"},
+        BadDrawing{"--image DIR/notes.png",
+                   "DIR/notes.png: not an image format animkit reads (supported: PNG, JPEG, BMP, "
+                   "PNM/PGM/PPM/PBM)"},
         BadDrawing{"--image DIR/cut.png", "DIR/cut.png: truncated PNG (the file ends after"},
         BadDrawing{"--image DIR/white.png",
                    "DIR/white.png: the image is a single shade (gray 255): nothing to draw"},

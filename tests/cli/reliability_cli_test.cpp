@@ -84,8 +84,8 @@ TEST(FullDisk, ARunThatFailsPartWayLeavesThePreviousCompleteSet) {
   const auto before = entries(out);
   const std::string path_csv = read_file(out / "path.csv");
   // The star's path.csv is larger than the limit: the run fails while writing its files.
-  const auto r = run_on_full_disk(
-      kCli + " ik --shape star --no-picture --out " + out.string(), /*kib=*/16);
+  const auto r =
+      run_on_full_disk(kCli + " ik --shape star --no-picture --out " + out.string(), /*kib=*/16);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(entries(out), before);
   EXPECT_EQ(read_file(out / "path.csv"), path_csv);
@@ -96,8 +96,8 @@ TEST(FullDisk, ARunThatFailsPartWayLeavesThePreviousCompleteSet) {
 TEST(FullDisk, AClothRunThatFailsKeepsItsFolderConsistent) {
   const fs::path dir = fresh_dir("cloth_partial");
   const fs::path out = dir / "out";
-  ASSERT_EQ(
-      run_command(kCli + " cloth --frames 10 --no-picture --out " + out.string()).exit_code, 0);
+  ASSERT_EQ(run_command(kCli + " cloth --frames 10 --no-picture --out " + out.string()).exit_code,
+            0);
   const auto r = run_on_full_disk(
       kCli + " cloth --frames 201 --grid 40 --no-picture --out " + out.string(), /*kib=*/64);
   EXPECT_EQ(r.exit_code, 2) << r.err;
@@ -121,7 +121,8 @@ TEST(ConcurrentRuns, TwoRunsIntoOneFolderLeaveOneWholeSet) {
     EXPECT_EQ(pc2_points(out / "cloth.pc2"), particles);
     const std::string obj = read_file(out / "cloth.obj");
     int vertices = 0;
-    for (std::size_t at = obj.find("\nv "); at != std::string::npos; at = obj.find("\nv ", at + 1)) {
+    for (std::size_t at = obj.find("\nv "); at != std::string::npos;
+         at = obj.find("\nv ", at + 1)) {
       ++vertices;
     }
     EXPECT_EQ(vertices, particles);
@@ -134,7 +135,8 @@ TEST(ConcurrentRuns, ALinkPlantedAtAnOldTemporaryNameIsNeverWrittenThrough) {
   std::ofstream(dir / "victim") << "precious";
   fs::create_directories(dir / "out");
   fs::create_symlink(dir / "victim", dir / "out" / "path.csv.tmp");
-  const auto r = run_command(kCli + " ik --shape circle --no-picture --out " + (dir / "out").string());
+  const auto r =
+      run_command(kCli + " ik --shape circle --no-picture --out " + (dir / "out").string());
   // The folder holds something animkit did not write: refused, and nothing written anywhere.
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(read_file(dir / "victim"), "precious");
@@ -172,13 +174,13 @@ TEST(Signals, SigintAndSigtermRemoveEveryTemporaryAndKeepThePreviousSet) {
   for (int signal_number : {SIGINT, SIGTERM}) {
     const fs::path dir = fresh_dir("signal_" + std::to_string(signal_number));
     const fs::path out = dir / "out";
-    ASSERT_EQ(
-        run_command(kCli + " cloth --frames 5 --no-picture --out " + out.string()).exit_code, 0);
+    ASSERT_EQ(run_command(kCli + " cloth --frames 5 --no-picture --out " + out.string()).exit_code,
+              0);
     const auto before = entries(out);
     // Long enough to be stopped mid-run, with a video (ffmpeg running) and a cache streaming.
-    const pid_t pid = start_cli({"cloth", "--grid", "60", "--frames", "100000", "--out",
-                                 out.string(), "--no-picture", "--video",
-                                 (dir / "v.mp4").string()});
+    const pid_t pid =
+        start_cli({"cloth", "--grid", "60", "--frames", "100000", "--out", out.string(),
+                   "--no-picture", "--video", (dir / "v.mp4").string()});
     ASSERT_TRUE(wait_for_entry(dir, ".staging"));
     ASSERT_TRUE(wait_for_entry(dir, "v.mp4.animkit-"));
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
@@ -194,8 +196,8 @@ TEST(Signals, SigintAndSigtermRemoveEveryTemporaryAndKeepThePreviousSet) {
 TEST(Signals, WhatAKilledRunLeftIsRemovedByTheNextRun) {
   const fs::path dir = fresh_dir("sigkill");
   const fs::path out = dir / "out";
-  const pid_t pid = start_cli({"cloth", "--grid", "60", "--frames", "100000", "--out",
-                               out.string(), "--no-picture"});
+  const pid_t pid = start_cli(
+      {"cloth", "--grid", "60", "--frames", "100000", "--out", out.string(), "--no-picture"});
   ASSERT_TRUE(wait_for_entry(dir, ".staging"));
   ::kill(pid, SIGKILL);
   ::waitpid(pid, nullptr, 0);
@@ -231,7 +233,7 @@ TEST(VideoPaths, AVideoInTheOutFolderArrivesWithTheRest) {
                              " --video " + (out / "v.gif").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(entries(out), (std::vector<std::string>{".animkit-outputs", "drawing.svg",
-                                                     "metrics.json", "path.csv", "v.gif"}));
+                                                    "metrics.json", "path.csv", "v.gif"}));
   // And a second run into it is allowed: the video is listed as the folder's own.
   const auto again = run_command(kCli + " ik --shape star --no-picture --out " + out.string());
   ASSERT_EQ(again.exit_code, 0) << again.err;

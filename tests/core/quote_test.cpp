@@ -24,9 +24,9 @@ TEST(QuoteInput, TerminalEscapesAndControlBytesAreShownNotSent) {
 TEST(QuoteInput, WellFormedUtf8IsKeptBrokenUtf8IsEscaped) {
   EXPECT_EQ(quote_input("Zoë 中"), "'Zoë 中'");
   EXPECT_EQ(quote_input("\xff\xfe"), "'\\xff\\xfe'");
-  EXPECT_EQ(quote_input("\xc0\xaf"), "'\\xc0\\xaf'");      // overlong '/'
+  EXPECT_EQ(quote_input("\xc0\xaf"), "'\\xc0\\xaf'");           // overlong '/'
   EXPECT_EQ(quote_input("\xed\xa0\x80"), "'\\xed\\xa0\\x80'");  // a surrogate
-  EXPECT_EQ(quote_input("\xe4\xb8"), "'\\xe4\\xb8'");      // cut short
+  EXPECT_EQ(quote_input("\xe4\xb8"), "'\\xe4\\xb8'");           // cut short
 }
 
 TEST(QuoteInput, LongInputIsCutWithItsSize) {

@@ -4,8 +4,8 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <iterator>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "../support/temp_files.h"

@@ -35,8 +35,8 @@ bool same(const Pixel& a, const Pixel& b) {
     if (!same(p, expected[i])) {
       return ::testing::AssertionFailure()
              << "pixel " << i << " is " << int(p.r) << "," << int(p.g) << "," << int(p.b) << ","
-             << int(p.a) << ", expected " << int(expected[i].r) << "," << int(expected[i].g)
-             << "," << int(expected[i].b) << "," << int(expected[i].a);
+             << int(p.a) << ", expected " << int(expected[i].r) << "," << int(expected[i].g) << ","
+             << int(expected[i].b) << "," << int(expected[i].a);
     }
   }
   return ::testing::AssertionSuccess();
@@ -61,8 +61,12 @@ TEST(DecodePng, PaletteWithTransparency) {
   spec.alphas = {255, 255, 128};
   spec.rows = {{0x01, 0x20}, {0x21, 0x00}};
   EXPECT_TRUE(pixels_are(decode_rgba_image(png_file(spec), "p.png"), 3, 2,
-                         {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 128},
-                          {0, 0, 255, 128}, {0, 255, 0, 255}, {255, 0, 0, 255}}));
+                         {{255, 0, 0, 255},
+                          {0, 255, 0, 255},
+                          {0, 0, 255, 128},
+                          {0, 0, 255, 128},
+                          {0, 255, 0, 255},
+                          {255, 0, 0, 255}}));
 }
 
 TEST(DecodePng, GrayAndAlphaCompositesOverWhiteForGray) {
@@ -140,14 +144,15 @@ void put32(Bytes& b, std::uint32_t v) {
 TEST(DecodeBmp, PalettedOneFourAndEightBits) {
   const Bytes two = {0, 0, 0, 0, 255, 255, 255, 0};  // black, white (b, g, r, 0)
   // 1-bit, 10x2, bottom-up: the first stored row is the bottom one.
-  const Bytes one_bit =
-      testing_support::bmp_file(10, 2, 1, {{0b10000000, 0b01000000, 0, 0}, {0xff, 0xc0, 0, 0}}, two);
+  const Bytes one_bit = testing_support::bmp_file(
+      10, 2, 1, {{0b10000000, 0b01000000, 0, 0}, {0xff, 0xc0, 0, 0}}, two);
   std::vector<Pixel> expected(20, gray(255));
   for (int x = 0; x < 10; ++x) expected[10 + x] = gray(x == 0 || x == 9 ? 255 : 0);
   EXPECT_TRUE(pixels_are(decode_rgba_image(one_bit, "1.bmp"), 10, 2, expected));
 
   Bytes four;
-  for (int i = 0; i < 16; ++i) four.insert(four.end(), {std::uint8_t(i), std::uint8_t(16 * i), 0, 0});
+  for (int i = 0; i < 16; ++i)
+    four.insert(four.end(), {std::uint8_t(i), std::uint8_t(16 * i), 0, 0});
   const Bytes four_bit = testing_support::bmp_file(3, 1, 4, {{0x1f, 0x20, 0, 0}}, four);
   EXPECT_TRUE(pixels_are(decode_rgba_image(four_bit, "4.bmp"), 3, 1,
                          {{0, 16, 1, 255}, {0, 240, 15, 255}, {0, 32, 2, 255}}));
@@ -161,12 +166,12 @@ TEST(DecodeBmp, PalettedOneFourAndEightBits) {
 TEST(DecodeBmp, TrueColourAndBitfields) {
   // 24-bit: b, g, r; rows padded to 4 bytes.
   const Bytes rgb24 = testing_support::bmp_file(1, 2, 24, {{1, 2, 3, 0}, {4, 5, 6, 0}});
-  EXPECT_TRUE(pixels_are(decode_rgba_image(rgb24, "24.bmp"), 1, 2,
-                         {{6, 5, 4, 255}, {3, 2, 1, 255}}));
+  EXPECT_TRUE(
+      pixels_are(decode_rgba_image(rgb24, "24.bmp"), 1, 2, {{6, 5, 4, 255}, {3, 2, 1, 255}}));
   // 32-bit BI_RGB with the fourth byte unused (all zero): opaque.
   const Bytes rgb32 = testing_support::bmp_file(2, 1, 32, {{10, 20, 30, 0, 40, 50, 60, 0}});
-  EXPECT_TRUE(pixels_are(decode_rgba_image(rgb32, "32.bmp"), 2, 1,
-                         {{30, 20, 10, 255}, {60, 50, 40, 255}}));
+  EXPECT_TRUE(
+      pixels_are(decode_rgba_image(rgb32, "32.bmp"), 2, 1, {{30, 20, 10, 255}, {60, 50, 40, 255}}));
   // 16-bit BI_RGB is 5-5-5: 0x7fff white, 0x7c00 red.
   const Bytes rgb555 = testing_support::bmp_file(2, 1, 16, {{0xff, 0x7f, 0x00, 0x7c}});
   EXPECT_TRUE(pixels_are(decode_rgba_image(rgb555, "555.bmp"), 2, 1,
@@ -175,8 +180,8 @@ TEST(DecodeBmp, TrueColourAndBitfields) {
   Bytes masks;
   for (std::uint32_t m : {0xf800u, 0x07e0u, 0x001fu}) put32(masks, m);
   const Bytes rgb565 = testing_support::bmp_file(2, 1, 16, {{0xe0, 0x07, 0x1f, 0x00}}, masks, 3);
-  EXPECT_TRUE(pixels_are(decode_rgba_image(rgb565, "565.bmp"), 2, 1,
-                         {{0, 255, 0, 255}, {0, 0, 255, 255}}));
+  EXPECT_TRUE(
+      pixels_are(decode_rgba_image(rgb565, "565.bmp"), 2, 1, {{0, 255, 0, 255}, {0, 0, 255, 255}}));
   // 32-bit BI_BITFIELDS with alpha, masks inside a version-4 (108-byte) header.
   Bytes v4 = testing_support::bmp_file(1, 1, 32, {{0x11, 0x22, 0x33, 0x80}}, {}, 3, 108);
   Bytes in_header;
@@ -186,9 +191,10 @@ TEST(DecodeBmp, TrueColourAndBitfields) {
 }
 
 TEST(DecodeBmp, UnsupportedOrDamagedFilesAreClearErrors) {
-  EXPECT_EQ(error_of(decode_rgba_image(testing_support::bmp_file(2, 1, 8, {{0, 0, 0, 0}}, {}, 1),
-                                       "rle.bmp")),
-            "rle.bmp: RLE-compressed BMP is not supported (save it as an uncompressed BMP or a PNG)");
+  EXPECT_EQ(
+      error_of(
+          decode_rgba_image(testing_support::bmp_file(2, 1, 8, {{0, 0, 0, 0}}, {}, 1), "rle.bmp")),
+      "rle.bmp: RLE-compressed BMP is not supported (save it as an uncompressed BMP or a PNG)");
   const Bytes two = {0, 0, 0, 0, 255, 255, 255, 0};
   EXPECT_EQ(error_of(decode_rgba_image(
                 testing_support::bmp_file(2, 1, 8, {{1, 7, 0, 0}}, two, 0, 40, 2), "pal.bmp")),
@@ -214,8 +220,8 @@ TEST(DecodePnm, EveryKindWithComments) {
   EXPECT_TRUE(pixels_are(decode_rgba_image(p4, "b.pbm"), 10, 1, line));
   EXPECT_TRUE(pixels_are(decode_rgba_image(bytes_of("P2 2 2 #c\n 10\n0 10 5 10"), "c.pgm"), 2, 2,
                          {gray(0), gray(255), gray(128), gray(255)}));
-  EXPECT_TRUE(pixels_are(decode_rgba_image(bytes_of("P3 1 1 255 1 2 3"), "d.ppm"), 1, 1,
-                         {{1, 2, 3, 255}}));
+  EXPECT_TRUE(
+      pixels_are(decode_rgba_image(bytes_of("P3 1 1 255 1 2 3"), "d.ppm"), 1, 1, {{1, 2, 3, 255}}));
   Bytes p5 = bytes_of("P5 2 1 65535\n");
   p5.insert(p5.end(), {0xff, 0xff, 0x80, 0x80});  // 16-bit big-endian samples
   EXPECT_TRUE(pixels_are(decode_rgba_image(p5, "e.pgm"), 2, 1, {gray(255), gray(128)}));

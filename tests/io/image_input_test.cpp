@@ -21,15 +21,17 @@ using testing_support::fresh_dir;
 
 std::string write(const std::filesystem::path& path, const Bytes& bytes) {
   std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
   return path.string();
 }
 
 // The error message of a read, or a note of what was decoded instead.
 template <class T>
 std::string error_of(const Result<T>& result) {
-  if (result) return "(no error: decoded " + std::to_string(result->width) + "x" +
-                     std::to_string(result->height) + ")";
+  if (result)
+    return "(no error: decoded " + std::to_string(result->width) + "x" +
+           std::to_string(result->height) + ")";
   return result.error().message;
 }
 
@@ -76,7 +78,8 @@ Bytes gray_png(int width, int height) {
 // A gray picture with some texture, so its JPEG has plenty of entropy-coded data.
 Bytes textured_jpeg() {
   Bytes samples(64 * 64);
-  for (int i = 0; i < 64 * 64; ++i) samples[i] = static_cast<std::uint8_t>((i * 37) ^ (i / 64 * 11));
+  for (int i = 0; i < 64 * 64; ++i)
+    samples[i] = static_cast<std::uint8_t>((i * 37) ^ (i / 64 * 11));
   return testing_support::jpeg_file(64, 64, 1, samples, 90);
 }
 
@@ -86,8 +89,9 @@ TEST(ReadImageFiles, BmpCutAt60PercentIsTruncated) {
   ASSERT_EQ(whole.size(), 18054u);
   const auto file = write(dir / "cut.bmp", cut(whole, whole.size() * 6 / 10));
   EXPECT_EQ(error_of(read_gray_image(file)),
-            file + ": truncated BMP (100x60 pixels at 24 bits need 18054 bytes, the file has "
-                   "10832)");
+            file +
+                ": truncated BMP (100x60 pixels at 24 bits need 18054 bytes, the file has "
+                "10832)");
   EXPECT_EQ(error_of(read_image(file)), error_of(read_gray_image(file)));
 }
 
@@ -97,8 +101,9 @@ TEST(ReadImageFiles, BmpHeaderClaimingMoreRowsThanTheFileHoldsIsTruncated) {
   bytes[22] = 100;  // the height says 100 rows; 10 are there
   const auto file = write(dir / "lie.bmp", bytes);
   EXPECT_EQ(error_of(read_gray_image(file)),
-            file + ": truncated BMP (100x100 pixels at 24 bits need 30054 bytes, the file has "
-                   "3054)");
+            file +
+                ": truncated BMP (100x100 pixels at 24 bits need 30054 bytes, the file has "
+                "3054)");
 }
 
 TEST(ReadImageFiles, PgmWithHalfItsPixelsIsTruncated) {
@@ -108,8 +113,9 @@ TEST(ReadImageFiles, PgmWithHalfItsPixelsIsTruncated) {
   bytes.insert(bytes.end(), pixels.begin(), pixels.begin() + pixels.size() / 2);
   const auto file = write(dir / "half.pgm", bytes);
   EXPECT_EQ(error_of(read_gray_image(file)),
-            file + ": truncated PGM (40x30 pixels need 1200 bytes after the header, only 600 "
-                   "follow it)");
+            file +
+                ": truncated PGM (40x30 pixels need 1200 bytes after the header, only 600 "
+                "follow it)");
 }
 
 TEST(ReadImageFiles, HugePgmHeaderWithAFewBytesIsTruncatedNotASingleShade) {
@@ -118,8 +124,9 @@ TEST(ReadImageFiles, HugePgmHeaderWithAFewBytesIsTruncatedNotASingleShade) {
   bytes.insert(bytes.end(), 100, 0);
   const auto file = write(dir / "huge.pgm", bytes);
   EXPECT_EQ(error_of(read_gray_image(file)),
-            file + ": truncated PGM (4096x4096 pixels need 16777216 bytes after the header, only "
-                   "100 follow it)");
+            file +
+                ": truncated PGM (4096x4096 pixels need 16777216 bytes after the header, only "
+                "100 follow it)");
 }
 
 TEST(ReadImageFiles, PngCutInsideItsPixelDataIsTruncated) {
@@ -135,9 +142,8 @@ TEST(ReadImageFiles, PngCutBeforeIendIsTruncated) {
   const Bytes whole = gray_png(40, 30);
   const Bytes short_file = cut(whole, whole.size() - 12);  // IEND is the last 12 bytes
   const auto file = write(dir / "cut.png", short_file);
-  EXPECT_EQ(error_of(read_gray_image(file)),
-            file + ": truncated PNG (the file ends after " + std::to_string(short_file.size()) +
-                " bytes)");
+  EXPECT_EQ(error_of(read_gray_image(file)), file + ": truncated PNG (the file ends after " +
+                                                 std::to_string(short_file.size()) + " bytes)");
 }
 
 TEST(ReadImageFiles, PngWithADamagedChunkIsCorrupt) {
@@ -173,8 +179,9 @@ TEST(ReadImageFiles, JpegWithGarbageInItsDataIsCorrupt) {
   for (std::size_t i = bytes.size() / 2; i < bytes.size() / 2 + 40; ++i) bytes[i] = 0xfe;
   const auto file = write(dir / "garbage.jpg", bytes);
   EXPECT_EQ(error_of(read_gray_image(file)),
-            file + ": corrupt JPEG (libjpeg: Corrupt JPEG data: 145 extraneous bytes before "
-                   "marker 0xd9)");
+            file +
+                ": corrupt JPEG (libjpeg: Corrupt JPEG data: 145 extraneous bytes before "
+                "marker 0xd9)");
 }
 
 TEST(ReadImageFiles, HugeDeclaredSizesAreRefusedFromTheHeader) {
@@ -210,8 +217,9 @@ TEST(ReadImageFiles, OtherFormatsAreRefusedListingTheSupportedOnes) {
             gif + ": GIF images are not supported (supported: PNG, JPEG, BMP, PNM/PGM/PPM/PBM)");
   const auto text = write(dir / "notes.png", testing_support::bytes_of("these are not pixels"));
   EXPECT_EQ(error_of(read_gray_image(text)),
-            text + ": not an image format animkit reads (supported: PNG, JPEG, BMP, "
-                   "PNM/PGM/PPM/PBM)");
+            text +
+                ": not an image format animkit reads (supported: PNG, JPEG, BMP, "
+                "PNM/PGM/PPM/PBM)");
 }
 
 }  // namespace

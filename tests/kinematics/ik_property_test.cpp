@@ -68,7 +68,9 @@ TEST_P(IkProperty, RandomChainsAndTargetsKeepEveryInvariant) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, IkProperty, testing::ValuesIn(all_ik_solvers()),
-                         [](const auto& param_info) { return std::string(to_string(param_info.param)); });
+                         [](const auto& param_info) {
+                           return std::string(to_string(param_info.param));
+                         });
 
 }  // namespace
 }  // namespace animkit

@@ -1,11 +1,10 @@
 #include "image_encoders.h"
 
+#include <jpeglib.h>
 #include <png.h>
 
 #include <cstdio>
 #include <stdexcept>
-
-#include <jpeglib.h>
 
 namespace animkit::testing_support {
 

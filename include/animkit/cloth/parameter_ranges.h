@@ -24,13 +24,13 @@ struct ParameterRange {
   }
 };
 
-inline constexpr ParameterRange kMassRange{1e-6, 1e6};         ///< per particle, kg
-inline constexpr ParameterRange kStiffnessRange{1e-6, 1e9};    ///< per spring, N/m
-inline constexpr ParameterRange kDampingRange{0.0, 1e6};       ///< dashpot, N s/m
-inline constexpr ParameterRange kGravityRange{-1e4, 1e4};      ///< along -y, m/s^2
-inline constexpr ParameterRange kTimeStepRange{1e-6, 10.0};    ///< per step, s
-inline constexpr ParameterRange kCoordinateRange{-1e6, 1e6};   ///< positions, m
-inline constexpr ParameterRange kSpeedRange{-1e6, 1e6};        ///< velocity components, m/s
+inline constexpr ParameterRange kMassRange{1e-6, 1e6};        ///< per particle, kg
+inline constexpr ParameterRange kStiffnessRange{1e-6, 1e9};   ///< per spring, N/m
+inline constexpr ParameterRange kDampingRange{0.0, 1e6};      ///< dashpot, N s/m
+inline constexpr ParameterRange kGravityRange{-1e4, 1e4};     ///< along -y, m/s^2
+inline constexpr ParameterRange kTimeStepRange{1e-6, 10.0};   ///< per step, s
+inline constexpr ParameterRange kCoordinateRange{-1e6, 1e6};  ///< positions, m
+inline constexpr ParameterRange kSpeedRange{-1e6, 1e6};       ///< velocity components, m/s
 /// Substeps per step: enough for explicit Euler at any stable setting the lab's sliders allow
 /// (the lab's 1000) and more, while a run still ends.
 inline constexpr int kMaxSubsteps = 100'000;

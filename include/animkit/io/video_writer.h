@@ -55,7 +55,7 @@ class VideoWriter {
   pid_t ffmpeg_ = 0;
   std::filesystem::path path_, temporary_;
   CleanupHandle temporary_cleanup_;
-  struct ErrorLog;                    // ffmpeg's standard error, collected in memory
+  struct ErrorLog;  // ffmpeg's standard error, collected in memory
   std::unique_ptr<ErrorLog> errors_;
   ChildHandle child_;
   std::filesystem::path ffprobe_;
