@@ -66,6 +66,12 @@ std::optional<std::filesystem::path> find_ffmpeg() {
   return find_program("ffmpeg");
 }
 
+struct VideoWriter::ErrorLog {
+  detail::PipeCollector collector;
+};
+
+VideoWriter::VideoWriter() = default;
+
 VideoWriter::VideoWriter(VideoWriter&& other) noexcept
     : pipe_(std::exchange(other.pipe_, -1)),
       ffmpeg_(std::exchange(other.ffmpeg_, 0)),
@@ -81,12 +87,6 @@ VideoWriter::VideoWriter(VideoWriter&& other) noexcept
       gif_(other.gif_),
       gif_resampled_(other.gif_resampled_),
       previous_sigpipe_(std::exchange(other.previous_sigpipe_, SIG_ERR)) {}
-
-struct VideoWriter::ErrorLog {
-  detail::PipeCollector collector;
-};
-
-VideoWriter::VideoWriter() = default;
 
 VideoWriter::~VideoWriter() {
   abandon();
