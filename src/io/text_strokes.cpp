@@ -203,12 +203,15 @@ Result<Strokes> text_strokes_from_font_data(std::string_view utf8,
       }
       const FT_Bitmap& bitmap = face->glyph->bitmap;
       // A broken font can claim a glyph thousands of ems wide: refused before the canvas is
-      // allocated (a real glyph spans a few ems at most).
-      constexpr unsigned kMaxGlyphPixels = 16 * kPixelsPerEm;
+      // allocated. Real glyphs span under two ems; the bound is 4, because thinning a filled
+      // 16-em glyph (2048 px square) took longer than the fuzzer's 10 s budget.
+      constexpr unsigned kMaxGlyphEms = 4;
+      constexpr unsigned kMaxGlyphPixels = kMaxGlyphEms * kPixelsPerEm;
       if (bitmap.rows > kMaxGlyphPixels || bitmap.width > kMaxGlyphPixels) {
         return fail("font " + font + ": " + code_point_name(c) + " is " +
                     std::to_string(bitmap.width) + "x" + std::to_string(bitmap.rows) +
-                    " pixels at 128 per em, larger than 16 ems");
+                    " pixels at 128 per em, larger than " + std::to_string(kMaxGlyphEms) +
+                    " ems");
       }
       if (bitmap.rows > 0 && bitmap.width > 0) {
         // The glyph on white paper with a margin, then its skeleton as for any image.
