@@ -3,7 +3,8 @@
 # over a scratch copy of fuzz/corpus/<name>/ (the repository's corpus does not grow) plus the
 # kept crash inputs in fuzz/regressions/<name>/. Crash inputs go to BUILD_DIR/crashes/<name>/,
 # logs to BUILD_DIR/logs/<name>.log. Exits 1 after all targets ran if any crashed, naming
-# each crashing target and its input file.
+# each crashing target and its input file. FUZZ_SEED=N fixes libFuzzer's random seed (CI does,
+# so the same commit explores the same inputs and a red CI run can be reproduced).
 set -uo pipefail
 build="${1:-build/fuzz}"
 seconds="${2:-60}"
@@ -26,12 +27,14 @@ for source in "$root"/fuzz/*_fuzz.cpp; do
   if [ -d "$root/fuzz/corpus/$name" ]; then cp -R "$root/fuzz/corpus/$name/." "$work/"; fi
   inputs=("$work")
   if [ -d "$root/fuzz/regressions/$name" ]; then inputs+=("$root/fuzz/regressions/$name"); fi
+  seed=()
+  if [ -n "${FUZZ_SEED:-}" ]; then seed=(-seed="$FUZZ_SEED"); fi
   echo "fuzz: $target for ${seconds} s ..."
   # -timeout: an input taking 10 s is a hang, reported like a crash. -rss_limit_mb and
   # -malloc_limit_mb: asking for more than 2 GB is a bug (a header trusted too far).
   ASAN_SYMBOLIZER_PATH="$(command -v llvm-symbolizer-16 || command -v llvm-symbolizer || true)" \
     "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 \
-    -artifact_prefix="$crashes/" -print_final_stats=1 "${inputs[@]}" >"$log" 2>&1
+    -artifact_prefix="$crashes/" -print_final_stats=1 "${seed[@]}" "${inputs[@]}" >"$log" 2>&1
   status=$?
   runs="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')"
   if [ "$status" -ne 0 ]; then
