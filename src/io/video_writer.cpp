@@ -84,8 +84,7 @@ VideoWriter::VideoWriter(VideoWriter&& other) noexcept
       width_(other.width_),
       height_(other.height_),
       frames_(other.frames_),
-      gif_(other.gif_),
-      gif_resampled_(other.gif_resampled_),
+      gif_resampled_from_(other.gif_resampled_from_),
       previous_sigpipe_(std::exchange(other.previous_sigpipe_, SIG_ERR)) {}
 
 VideoWriter::~VideoWriter() {
@@ -143,8 +142,8 @@ Result<VideoWriter> VideoWriter::open(const std::filesystem::path& path, int wid
   writer.width_ = width;
   writer.height_ = height;
   writer.ffprobe_ = *ffprobe;
-  writer.gif_ = extension == ".gif";
-  writer.gif_resampled_ = writer.gif_ && fps > 50.0;
+  const bool gif = extension == ".gif";
+  if (gif && fps > 50.0) writer.gif_resampled_from_ = fps;
   // Both names reserved here: a read-only folder or a name too long is one clear error now,
   // not ffmpeg's complaint later.
   const std::filesystem::path temporary = unique_sibling(path, "tmp");
@@ -173,12 +172,12 @@ Result<VideoWriter> VideoWriter::open(const std::filesystem::path& path, int wid
                                    format_number(fps),
                                    "-i",
                                    "pipe:0"};
-  if (writer.gif_) {
+  if (gif) {
     // GIF delays are whole hundredths of a second and players stretch 1/100 s to 1/10 s, so
     // above 50 fps frames are dropped to 50 fps (2/100 s each) to keep the timing. One
     // palette for the whole animation, made from its own frames.
     argv.insert(argv.end(), {"-vf",
-                             std::string(writer.gif_resampled_ ? "fps=50," : "") +
+                             std::string(writer.gif_resampled_from_ > 0.0 ? "fps=50," : "") +
                                  "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse",
                              "-f", "gif"});
   } else {
@@ -240,9 +239,10 @@ Result<void> VideoWriter::check_complete() const {
   if (!counted) return fail(path_.string() + ": the finished file cannot be read back");
   char* end = nullptr;
   const long packets = std::strtol(counted->c_str(), &end, 10);
-  // Resampling 60 to 50 fps keeps 5 frames in 6, give or take one at the ends.
-  const long expected = gif_resampled_ ? std::lround(frames_ * 50.0 / 60.0) : frames_;
-  const long slack = gif_resampled_ ? 2 : 0;
+  // Resampling to 50 fps keeps 50 frames of every `fps` sent, give or take one at the ends.
+  const bool resampled = gif_resampled_from_ > 0.0;
+  const long expected = resampled ? std::lround(frames_ * 50.0 / gif_resampled_from_) : frames_;
+  const long slack = resampled ? 2 : 0;
   if (end == counted->c_str() || std::labs(packets - expected) > slack) {
     return fail(path_.string() + ": the finished file holds " + std::to_string(packets) +
                 " frames of the " + std::to_string(expected) + " sent");

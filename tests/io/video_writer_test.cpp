@@ -33,6 +33,20 @@ TEST(VideoWriter, WritesAnMp4AndAGifWhenFfmpegIsThere) {
   }
 }
 
+TEST(VideoWriter, AGifAbove50FpsIsResampledAndStillCheckedComplete) {
+  if (!find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
+  const auto dir = fresh_dir("video_gif_55");
+  for (double fps : {55.0, 60.0}) {
+    auto video = VideoWriter::open(dir / "clip.gif", 64, 48, fps);
+    ASSERT_TRUE(video.has_value()) << video.error().message;
+    for (int i = 0; i < 120; ++i) {
+      ASSERT_TRUE(video->add_frame(solid(64, 48, static_cast<std::uint8_t>(2 * i))).has_value());
+    }
+    const auto finished = video->finish();
+    EXPECT_TRUE(finished.has_value()) << fps << " fps: " << finished.error().message;
+  }
+}
+
 TEST(VideoWriter, AnAbandonedVideoLeavesNoFile) {
   if (!find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
   const auto dir = fresh_dir("video_abandoned");

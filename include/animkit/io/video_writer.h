@@ -60,7 +60,7 @@ class VideoWriter {
   ChildHandle child_;
   std::filesystem::path ffprobe_;
   int width_ = 0, height_ = 0, frames_ = 0;
-  bool gif_ = false, gif_resampled_ = false;  // GIFs above 50 fps are resampled to 50 fps
+  double gif_resampled_from_ = 0.0;  // a GIF's fps above 50, resampled to 50; else 0
   void (*previous_sigpipe_)(int) = SIG_ERR;
 };
 
