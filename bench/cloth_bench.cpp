@@ -8,12 +8,11 @@
 
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
+#include "animkit/cloth/integrator_registry.h"
 #include "lab_float_cloth.h"
 #include "ratio_reporter.h"
 
 namespace {
-
-using animkit::IntegratorKind;
 
 constexpr double kFrame = 1.0 / 60.0;
 constexpr int kWarmUpFrames = 30;  // start timing on a moving, deformed cloth
@@ -38,9 +37,10 @@ animkit::ClothState warmed_up_state(benchmark::State& state) {
   return sim.state();
 }
 
-void animkit_step(benchmark::State& state, IntegratorKind kind) {
+void animkit_step(benchmark::State& state, std::string_view integrator) {
   const animkit::ClothState warm = warmed_up_state(state);
-  auto sim = *animkit::ClothSimulator::create(animkit::make_grid_cloth(grid(state)), {kind, 0, {}});
+  auto sim = *animkit::ClothSimulator::create(animkit::make_grid_cloth(grid(state)),
+                                              {animkit::find_integrator(integrator)->defaults, 0});
   double newton = 0, cg = 0, steps = 0, converged = 0;
   for (auto _ : state) {
     if (static_cast<int>(steps) % kWindow == 0) {
@@ -64,10 +64,10 @@ void animkit_step(benchmark::State& state, IntegratorKind kind) {
 }
 
 void BM_ImplicitPcg(benchmark::State& state) {
-  animkit_step(state, IntegratorKind::implicit_pcg);
+  animkit_step(state, "implicit-pcg");
 }
 void BM_ImplicitDirect(benchmark::State& state) {
-  animkit_step(state, IntegratorKind::implicit_direct);
+  animkit_step(state, "implicit-direct");
 }
 
 void BM_LabFloatImplicit(benchmark::State& state) {

@@ -29,13 +29,6 @@ namespace {
 
 constexpr int kMaxFrames = 1'000'000;
 
-std::string integrator_names() {
-  std::string names;
-  for (IntegratorKind k : all_integrators())
-    names += (names.empty() ? "" : ", ") + std::string(to_string(k));
-  return names;
-}
-
 // "frame 120/600, 1.23 ms/step" on one rewritten line, only when stderr is a terminal.
 class ProgressLine {
  public:
@@ -70,15 +63,15 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
     return report_error("--frames must be between 1 and " + std::to_string(kMaxFrames) + ", got " +
                         std::to_string(args.frames));
   }
-  const auto integrator = parse_integrator(args.integrator);
+  const IntegratorEntry* integrator = find_integrator(args.integrator);
   if (!integrator) {
     return report_error("unknown integrator " + quote_input(args.integrator) +
                         " (expected one of: " + integrator_names() + ")");
   }
   SimulationOptions options;
-  options.integrator = *integrator;
+  options.integrator = integrator->defaults;
   options.substeps = args.substeps;
-  options.implicit.tolerance = args.tolerance;
+  set_tolerance(options.integrator, args.tolerance);
   auto sim = ClothSimulator::create(make_grid_cloth(args.grid), options);
   if (!sim) return report_error(sim.error().message);
 
@@ -138,7 +131,7 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
   }
   progress.done();
 
-  const ClothRunInfo info{std::string(to_string(*integrator)),
+  const ClothRunInfo info{std::string(integrator->name),
                           args.grid.cells,
                           sim->model().particle_count(),
                           sim->model().spring_count(),

@@ -6,6 +6,7 @@
 
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
+#include "animkit/cloth/integrator_registry.h"
 #include "picture_output.h"
 
 namespace animkit::cli {
@@ -15,9 +16,9 @@ struct ClothArgs {
   GridClothOptions grid;  ///< the lab's cloth by default
   int frames = 300;
   double dt = 1.0 / 60.0;
-  std::string integrator{to_string(SimulationOptions{}.integrator)};
+  std::string integrator{integrator_entry(SimulationOptions{}.integrator).name};
   int substeps = 0;
-  double tolerance = ImplicitOptions{}.tolerance;
+  double tolerance = NewtonSettings{}.tolerance;
   std::string out;  ///< empty: write no files
   PictureArgs pictures;
 };

@@ -8,6 +8,8 @@
 #include <deque>
 #include <vector>
 
+#include "animkit/cloth/integrator_registry.h"
+
 namespace animkit::viewer {
 
 namespace {
@@ -95,12 +97,16 @@ void ClothView::panel() {
     changed = true;
   }
   if (ImGui::SliderInt("Grid cells", &g.cells, 2, 60)) changed = true;
-  int integrator = static_cast<int>(o.simulation.integrator);
-  if (ImGui::Combo("Integrator", &integrator,
-                   "explicit Euler (1000 substeps)\0implicit Euler, sparse LDL^T\0implicit Euler, "
-                   "PCG\0")) {
-    o.simulation.integrator = static_cast<IntegratorKind>(integrator);
-    changed = true;
+  const IntegratorEntry& current = integrator_entry(o.simulation.integrator);
+  if (ImGui::BeginCombo("Integrator", current.name.data())) {
+    for (const IntegratorEntry& entry : cloth_integrators()) {
+      if (ImGui::Selectable(entry.name.data(), &entry == &current)) {
+        o.simulation.integrator = entry.defaults;
+        changed = true;
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", entry.summary.data());
+    }
+    ImGui::EndCombo();
   }
   if (changed) {
     edited_ = o;

@@ -4,6 +4,7 @@
 #include <exception>
 #include <string>
 
+#include "animkit/cloth/integrator_registry.h"
 #include "drawing_args.h"
 #include "hosts.h"
 #include "size_arg.h"
@@ -22,7 +23,7 @@ int run(int argc, char** argv) {
       "animkit-viewer: the lab's inverse-kinematics arm and mass-spring cloth, live. With "
       "--capture it runs headless (no display needed) and writes a picture."};
   ViewerOptions options;
-  std::string scene = "ik", solver = "ccd", integrator(to_string(IntegratorKind::implicit_pcg));
+  std::string scene = "ik", solver = "ccd", integrator(integrator_entry(NewtonSettings{}).name);
   std::string size;
   int frames = 0;
   std::string capture;
@@ -33,8 +34,7 @@ int run(int argc, char** argv) {
   app.add_option("--solver", solver, "IK: ccd or fabrik")->capture_default_str();
   GridClothOptions& grid = options.cloth.grid;
   app.add_option("--grid", grid.cells, "Cloth: cells per side")->capture_default_str();
-  app.add_option("--integrator", integrator, "Cloth: explicit, implicit-direct or implicit-pcg")
-      ->capture_default_str();
+  app.add_option("--integrator", integrator, "Cloth: " + integrator_names())->capture_default_str();
   app.add_option("--mass", grid.mass, "Cloth: mass per particle")->capture_default_str();
   app.add_option("--stiffness", grid.stiffness, "Cloth: spring stiffness")->capture_default_str();
   app.add_option("--damping", grid.damping, "Cloth: spring damping")->capture_default_str();
@@ -74,13 +74,12 @@ int run(int argc, char** argv) {
   if (!request) return report_error(request.error().message, 2);
   options.ik.source = request->first;
   options.ik.layout = request->second;
-  const auto kind = parse_integrator(integrator);
-  if (!kind) {
-    return report_error("unknown integrator '" + integrator +
-                            "' (expected explicit, implicit-direct or implicit-pcg)",
-                        2);
+  const IntegratorEntry* entry = find_integrator(integrator);
+  if (!entry) {
+    return report_error(
+        "unknown integrator '" + integrator + "' (expected one of: " + integrator_names() + ")", 2);
   }
-  options.cloth.simulation.integrator = *kind;
+  options.cloth.simulation.integrator = entry->defaults;
   if (!size.empty()) {
     const auto parsed = apps::parse_pixel_size(size, 300);
     if (!parsed || parsed->width < 400) {

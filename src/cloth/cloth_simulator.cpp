@@ -5,48 +5,23 @@
 #include <cmath>
 #include <string>
 
-#include "animkit/cloth/explicit_euler.h"
+#include "animkit/cloth/integrator.h"
+#include "animkit/cloth/integrator_registry.h"
 #include "animkit/cloth/parameter_ranges.h"
 #include "animkit/core/validation.h"
 
 namespace animkit {
-
-std::string_view to_string(IntegratorKind kind) {
-  switch (kind) {
-    case IntegratorKind::explicit_euler:
-      return "explicit";
-    case IntegratorKind::implicit_direct:
-      return "implicit-direct";
-    case IntegratorKind::implicit_pcg:
-      return "implicit-pcg";
-  }
-  return "unknown";
-}
-
-std::span<const IntegratorKind> all_integrators() {
-  static constexpr std::array kinds{IntegratorKind::explicit_euler, IntegratorKind::implicit_direct,
-                                    IntegratorKind::implicit_pcg};
-  return kinds;
-}
-
-std::optional<IntegratorKind> parse_integrator(std::string_view name) {
-  for (IntegratorKind kind : all_integrators()) {
-    if (name == to_string(kind)) return kind;
-  }
-  return std::nullopt;
-}
 
 std::optional<Error> SimulationOptions::validate() const {
   if (substeps < 0 || substeps > kMaxSubsteps) {
     return Error{"substeps must be between 1 and " + std::to_string(kMaxSubsteps) +
                  " (or 0 for the default), got " + std::to_string(substeps)};
   }
-  return implicit.validate();
+  return animkit::validate(integrator);
 }
 
 int SimulationOptions::effective_substeps() const {
-  if (substeps > 0) return substeps;
-  return integrator == IntegratorKind::explicit_euler ? 1000 : 1;
+  return substeps > 0 ? substeps : integrator_entry(integrator).default_substeps;
 }
 
 struct ClothSimulator::Impl {
@@ -54,8 +29,7 @@ struct ClothSimulator::Impl {
   ClothState state;
   ClothState backup;  // the state before the current step, to undo a diverged one
   SimulationOptions options;
-  std::optional<ExplicitEuler> explicit_euler;
-  std::optional<ImplicitEuler> implicit_euler;
+  std::unique_ptr<ClothIntegrator> integrator;
   std::optional<Eigen::VectorXd> external_forces;
   int steps = 0;
 };
@@ -90,15 +64,7 @@ Result<ClothSimulator> ClothSimulator::create(const ClothDesc& desc,
   impl->state = std::move(built->state);
   impl->backup = impl->state;
   impl->options = options;
-  if (options.integrator == IntegratorKind::explicit_euler) {
-    impl->explicit_euler.emplace(impl->model);
-  } else {
-    ImplicitOptions implicit = options.implicit;
-    implicit.linear_solver = options.integrator == IntegratorKind::implicit_direct
-                                 ? LinearSolverKind::direct
-                                 : LinearSolverKind::pcg;
-    impl->implicit_euler.emplace(impl->model, implicit);
-  }
+  impl->integrator = make_integrator(impl->model, options.integrator);
   return ClothSimulator(std::move(impl));
 }
 
@@ -166,11 +132,7 @@ Result<StepReport> ClothSimulator::step(double dt) {
   s.backup.velocities = s.state.velocities;
   const double h = dt / report.substeps;
   const Eigen::VectorXd* external = s.external_forces ? &*s.external_forces : nullptr;
-  if (s.explicit_euler) {
-    s.explicit_euler->step(s.state, dt, report.substeps, external);
-  } else {
-    for (int k = 0; k < report.substeps; ++k) s.implicit_euler->step(s.state, h, report, external);
-  }
+  for (int k = 0; k < report.substeps; ++k) s.integrator->step(s.state, h, report, external);
   std::optional<std::string> problem = divergence(s.state);
   if (!problem &&
       !(std::isfinite(report.gradient_norm_start) && std::isfinite(report.gradient_norm_end))) {
@@ -182,7 +144,7 @@ Result<StepReport> ClothSimulator::step(double dt) {
     s.state.positions = s.backup.positions;
     s.state.velocities = s.backup.velocities;
     return fail("the simulation diverged in step " + std::to_string(s.steps + 1) + " (" +
-                std::string(to_string(s.options.integrator)) + ", " +
+                std::string(integrator_entry(s.options.integrator).name) + ", " +
                 std::to_string(report.substeps) + " substep(s) of " + format_number(h) +
                 " s): " + *problem);
   }

@@ -26,18 +26,16 @@ void cloth_forces(const ClothModel& model, const Eigen::VectorXd& positions,
 ExplicitEuler::ExplicitEuler(const ClothModel& model)
     : model_(model), forces_(3 * model.particle_count()) {}
 
-void ExplicitEuler::step(ClothState& state, double h, int substeps,
+void ExplicitEuler::step(ClothState& state, double h, StepReport& report,
                          const Eigen::VectorXd* external_forces) {
-  const double dt = h / substeps;
-  for (int k = 0; k < substeps; ++k) {
-    cloth_forces(model_, state.positions, state.velocities, forces_);
-    if (external_forces) forces_ += *external_forces;
-    for (int i = 0; i < model_.particle_count(); ++i) {
-      if (model_.pinned[i]) continue;
-      state.velocities.segment<3>(3 * i) += (dt / model_.mass[i]) * forces_.segment<3>(3 * i);
-      state.positions.segment<3>(3 * i) += dt * state.velocities.segment<3>(3 * i);
-    }
+  cloth_forces(model_, state.positions, state.velocities, forces_);
+  if (external_forces) forces_ += *external_forces;
+  for (int i = 0; i < model_.particle_count(); ++i) {
+    if (model_.pinned[i]) continue;
+    state.velocities.segment<3>(3 * i) += (h / model_.mass[i]) * forces_.segment<3>(3 * i);
+    state.positions.segment<3>(3 * i) += h * state.velocities.segment<3>(3 * i);
   }
+  ++report.substeps_done;
 }
 
 }  // namespace animkit

@@ -28,13 +28,12 @@ constexpr double kRoundingFloor = 16.0 * std::numeric_limits<double>::epsilon();
 
 }  // namespace
 
-std::optional<Error> ImplicitOptions::validate() const {
+std::optional<Error> NewtonSettings::validate() const {
   if (!std::isfinite(tolerance) || tolerance <= 0.0 || tolerance >= 1.0) {
     return Error{"tolerance must be in (0, 1), got " + format_number(tolerance)};
   }
-  if (max_newton_iterations < 1) {
-    return Error{"max Newton iterations must be at least 1, got " +
-                 std::to_string(max_newton_iterations)};
+  if (max_iterations < 1) {
+    return Error{"max Newton iterations must be at least 1, got " + std::to_string(max_iterations)};
   }
   if (!std::isfinite(beta) || beta <= 0.0 || beta >= 1.0) {
     return Error{"line-search beta must be in (0, 1), got " + format_number(beta)};
@@ -57,7 +56,7 @@ struct ImplicitEuler::DirectSolver {
   Eigen::VectorXd rhs, solution;  // in the pattern's order
 };
 
-ImplicitEuler::ImplicitEuler(const ClothModel& model, const ImplicitOptions& options)
+ImplicitEuler::ImplicitEuler(const ClothModel& model, const NewtonSettings& options)
     : model_(model),
       options_(options),
       potential_(model),
@@ -83,7 +82,7 @@ ImplicitEuler::ImplicitEuler(const ClothModel& model, const ImplicitOptions& opt
 
 ImplicitEuler::~ImplicitEuler() = default;
 
-bool ImplicitEuler::solve_newton_system(double relative_gradient, NewtonIterationRecord& record) {
+bool ImplicitEuler::solve_newton_system(double relative_gradient, IterationRecord& record) {
   rhs_ = -gradient_;
   if (direct_) {
     direct_->pattern.assign(hessian_);
@@ -109,7 +108,8 @@ bool ImplicitEuler::solve_newton_system(double relative_gradient, NewtonIteratio
 
 void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
                          const Eigen::VectorXd* external_forces) {
-  auto t = Clock::now();
+  const auto substep_start = Clock::now();
+  auto t = substep_start;
   potential_.prepare(state, h, external_forces);
   x_ = potential_.predicted();
   potential_.gradient(x_, gradient_);
@@ -130,12 +130,10 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
   // Written so that a NaN or an infinite norm never counts as converged (inf <= inf is true).
   const auto reached = [&stop](double norm) { return std::isfinite(norm) && norm <= stop; };
   bool converged = reached(gradient_norm);
-  for (int k = 0; !converged && std::isfinite(gradient_norm) && k < options_.max_newton_iterations;
-       ++k) {
-    NewtonIterationRecord record;
+  for (int k = 0; !converged && std::isfinite(gradient_norm) && k < options_.max_iterations; ++k) {
+    IterationRecord record;
     // g itself is needed only for the record: the line search works with differences.
     if (options_.record_iterations) record.objective = potential_.value(x_);
-    record.gradient_norm = gradient_norm;
 
     // Hessian and Newton direction: exact Hessian first unless always projecting; redo with
     // the projected one when the solve meets negative curvature or gives no descent.
@@ -187,6 +185,8 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
     ++report.newton_iterations;
     converged = reached(gradient_norm);
 
+    record.gradient_norm = gradient_norm;
+    record.ms = ms_since(substep_start);
     record.decrease = decrease;
     if (options_.record_iterations) record.objective_after = potential_.value(x_);
     record.slope = slope;

@@ -9,12 +9,22 @@
 
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
+#include "animkit/cloth/integrator_registry.h"
 #include "animkit/core/validation.h"
 
 namespace animkit {
 namespace {
 
-class ClothProperty : public testing::TestWithParam<IntegratorKind> {};
+// Every integrator of the registry that solves the implicit step.
+std::vector<std::string_view> implicit_integrator_names() {
+  std::vector<std::string_view> names;
+  for (const IntegratorEntry& entry : cloth_integrators()) {
+    if (tolerance_of(entry.defaults)) names.push_back(entry.name);
+  }
+  return names;
+}
+
+class ClothProperty : public testing::TestWithParam<std::string_view> {};
 
 TEST_P(ClothProperty, RandomClothsKeepEveryInvariant) {
   std::mt19937 rng(20261123);
@@ -32,10 +42,10 @@ TEST_P(ClothProperty, RandomClothsKeepEveryInvariant) {
     grid.damping = unit(rng) < 0.2 ? 0.0 : log_uniform(0.01, 10.0);
     grid.gravity = log_uniform(0.1, 20.0);
     const double dt = log_uniform(1e-3, 0.1);
-    ImplicitOptions implicit;
-    implicit.record_iterations = true;
-    implicit.tolerance = 1e-6;
-    auto sim = ClothSimulator::create(make_grid_cloth(grid), {GetParam(), 0, implicit});
+    IntegratorSettings settings = find_integrator(GetParam())->defaults;
+    set_record_iterations(settings, true);
+    set_tolerance(settings, 1e-6);
+    auto sim = ClothSimulator::create(make_grid_cloth(grid), {settings, 0});
     ASSERT_TRUE(sim) << sim.error().message;
     const Eigen::VectorXd start = sim->state().positions;
     for (int s = 0; s < 15; ++s) {
@@ -48,7 +58,7 @@ TEST_P(ClothProperty, RandomClothsKeepEveryInvariant) {
         EXPECT_EQ(sim->state().position(i), Vec3(start.segment<3>(3 * i)));
         EXPECT_EQ(sim->state().velocity(i), Vec3::Zero());
       }
-      for (const NewtonIterationRecord& it : report->iterations) {
+      for (const IterationRecord& it : report->iterations) {
         EXPECT_LE(it.decrease, 0.0) << "cloth " << cloth << " step " << s;
         EXPECT_LT(it.slope, 0.0);
       }
@@ -61,11 +71,9 @@ TEST_P(ClothProperty, RandomClothsKeepEveryInvariant) {
   EXPECT_EQ(steps, 40 * 15);
 }
 
-INSTANTIATE_TEST_SUITE_P(Implicit, ClothProperty,
-                         testing::Values(IntegratorKind::implicit_direct,
-                                         IntegratorKind::implicit_pcg),
+INSTANTIATE_TEST_SUITE_P(Implicit, ClothProperty, testing::ValuesIn(implicit_integrator_names()),
                          [](const auto& param_info) {
-                           std::string name(to_string(param_info.param));
+                           std::string name(param_info.param);
                            for (char& c : name) c = c == '-' ? '_' : c;
                            return name;
                          });

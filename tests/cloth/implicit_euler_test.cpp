@@ -9,15 +9,22 @@
 
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
+#include "animkit/cloth/integrator_registry.h"
 
 namespace animkit {
 namespace {
 
 constexpr double kFrame = 1.0 / 60.0;
 
-ClothSimulator simulator(const ClothDesc& desc, IntegratorKind kind, ImplicitOptions implicit = {},
+// Newton settings with the given linear solver.
+NewtonSettings newton(LinearSolverKind solver, NewtonSettings settings = {}) {
+  settings.linear_solver = solver;
+  return settings;
+}
+
+ClothSimulator simulator(const ClothDesc& desc, const IntegratorSettings& settings,
                          int substeps = 0) {
-  auto sim = ClothSimulator::create(desc, {kind, substeps, implicit});
+  auto sim = ClothSimulator::create(desc, {settings, substeps});
   EXPECT_TRUE(sim) << sim.error().message;
   return std::move(*sim);
 }
@@ -37,19 +44,19 @@ ClothDesc crumpled_cloth(double stiffness) {
   return desc;
 }
 
-class ImplicitIntegrators : public testing::TestWithParam<IntegratorKind> {};
+class ImplicitIntegrators : public testing::TestWithParam<LinearSolverKind> {};
 
 TEST_P(ImplicitIntegrators, EveryAcceptedStepSatisfiesArmijo) {
-  ImplicitOptions options;
+  NewtonSettings options;
   options.record_iterations = true;
   // A crumpled stiff cloth and big steps make the line search work.
-  auto sim = simulator(crumpled_cloth(1e4), GetParam(), options);
+  auto sim = simulator(crumpled_cloth(1e4), newton(GetParam(), options));
   int backtracked = 0;
   for (int frame = 0; frame < 30; ++frame) {
     const auto report = sim.step(1.0);
     ASSERT_TRUE(report) << report.error().message;
     EXPECT_TRUE(report->converged);
-    for (const NewtonIterationRecord& it : report->iterations) {
+    for (const IterationRecord& it : report->iterations) {
       EXPECT_LT(it.slope, 0.0);  // a descent direction
       // Armijo, checked with g evaluated on its own at both points (not the line search's
       // difference), allowing g's own rounding.
@@ -66,7 +73,7 @@ TEST_P(ImplicitIntegrators, EveryAcceptedStepSatisfiesArmijo) {
 }
 
 TEST_P(ImplicitIntegrators, ConvergeToTheGradientTolerance) {
-  auto sim = simulator(make_grid_cloth(), GetParam());
+  auto sim = simulator(make_grid_cloth(), newton(GetParam()));
   for (int frame = 0; frame < 60; ++frame) {
     const auto report = sim.step(kFrame);
     ASSERT_TRUE(report);
@@ -79,7 +86,7 @@ TEST_P(ImplicitIntegrators, ConvergeToTheGradientTolerance) {
 }
 
 TEST_P(ImplicitIntegrators, PinnedParticlesNeverMove) {
-  auto sim = simulator(make_grid_cloth(), GetParam());
+  auto sim = simulator(make_grid_cloth(), newton(GetParam()));
   const Vec3 a = sim.state().position(grid_index(10, 0, 0));
   const Vec3 b = sim.state().position(grid_index(10, 0, 10));
   for (int frame = 0; frame < 120; ++frame) {
@@ -95,7 +102,7 @@ TEST_P(ImplicitIntegrators, AFreeParticleFallsExactlyUnderGravity) {
   ClothDesc desc;
   desc.particles = {{Vec3(0.0, 10.0, 0.0), Vec3(0.5, 1.0, 0.0), 2.0, false}};
   desc.gravity = 0.3;
-  auto sim = simulator(desc, GetParam());
+  auto sim = simulator(desc, newton(GetParam()));
   Vec3 x(0.0, 10.0, 0.0), v(0.5, 1.0, 0.0);
   for (int n = 0; n < 100; ++n) {
     ASSERT_TRUE(sim.step(kFrame));
@@ -110,7 +117,7 @@ TEST_P(ImplicitIntegrators, AFreeParticleFallsExactlyUnderGravity) {
 TEST_P(ImplicitIntegrators, DampingMakesTotalEnergyDecrease) {
   // The lab's cloth falling and swinging from flat, with damping: every step loses energy,
   // never gains it.
-  auto sim = simulator(make_grid_cloth({.damping = 2.0}), GetParam());
+  auto sim = simulator(make_grid_cloth({.damping = 2.0}), newton(GetParam()));
   double previous = cloth_energy(sim.model(), sim.state()).total;
   for (int frame = 0; frame < 300; ++frame) {
     const auto report = sim.step(kFrame);
@@ -134,8 +141,8 @@ TEST_P(ImplicitIntegrators, DashpotsDampASpringOscillator) {
     desc.damping = damping;
     return desc;
   };
-  auto damped = simulator(oscillator(0.5), GetParam());
-  auto undamped = simulator(oscillator(0.0), GetParam());
+  auto damped = simulator(oscillator(0.5), newton(GetParam()));
+  auto undamped = simulator(oscillator(0.0), newton(GetParam()));
   const double start = cloth_energy(damped.model(), damped.state()).total;
   ASSERT_NEAR(start, 0.125, 1e-12);
   for (int frame = 0; frame < 600; ++frame) {
@@ -148,7 +155,7 @@ TEST_P(ImplicitIntegrators, DashpotsDampASpringOscillator) {
 
 TEST_P(ImplicitIntegrators, StableWhereExplicitEulerDiverges) {
   const ClothDesc stiff = make_grid_cloth({.stiffness = 1e4});
-  auto implicit = simulator(stiff, GetParam());
+  auto implicit = simulator(stiff, newton(GetParam()));
   for (int frame = 0; frame < 600; ++frame) {
     const auto report = implicit.step(1.0 / 30.0);
     ASSERT_TRUE(report) << report.error().message;
@@ -159,7 +166,7 @@ TEST_P(ImplicitIntegrators, StableWhereExplicitEulerDiverges) {
     EXPECT_LT(implicit.state().velocity(p).norm(), 10.0);
   }
 
-  auto explicit_euler = simulator(stiff, IntegratorKind::explicit_euler, {}, /*substeps=*/1);
+  auto explicit_euler = simulator(stiff, ExplicitEulerSettings{}, /*substeps=*/1);
   std::optional<std::string> error;
   int frame = 0;
   for (; frame < 600 && !error; ++frame) {
@@ -179,7 +186,7 @@ TEST_P(ImplicitIntegrators, StableWhereExplicitEulerDiverges) {
 TEST_P(ImplicitIntegrators, TheLabsClothHangsSymmetrically) {
   // Pinned at (0,0) and (0,n), the cloth is mirror-symmetric about z = 0 and stays so while
   // it swings (a 2-unit pendulum under g = 0.3 swings for a long time: its period is ~16 s).
-  auto sim = simulator(make_grid_cloth(), GetParam());
+  auto sim = simulator(make_grid_cloth(), newton(GetParam()));
   const int n = 10;
   const auto expect_symmetric = [&](double tolerance) {
     for (int i = 0; i <= n; ++i) {
@@ -207,10 +214,9 @@ TEST_P(ImplicitIntegrators, TheLabsClothHangsSymmetrically) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothLinearSolvers, ImplicitIntegrators,
-                         testing::Values(IntegratorKind::implicit_direct,
-                                         IntegratorKind::implicit_pcg),
+                         testing::Values(LinearSolverKind::direct, LinearSolverKind::pcg),
                          [](const auto& param_info) {
-                           std::string name(to_string(param_info.param));
+                           std::string name(integrator_entry(newton(param_info.param)).name);
                            std::replace(name.begin(), name.end(), '-', '_');
                            return name;
                          });
@@ -220,11 +226,11 @@ TEST(ImplicitEuler, NewtonConvergesQuadraticallyNearTheSolution) {
   // iterations. Near the solution each full Newton step about squares the relative gradient
   // norm: e_{k+1} <= C e_k^2. A linearly convergent method at rate r has e_{k+1} / e_k^2 =
   // r / e_k: the always-projected Hessian (r ~ 0.2-0.3) breaks C = 2000 once e_k < 1e-4.
-  ImplicitOptions options;
+  NewtonSettings options;
   options.record_iterations = true;
   options.tolerance = 1e-12;
   auto sim = simulator(make_grid_cloth({.cells = 6, .stiffness = 1e4}),
-                       IntegratorKind::implicit_direct, options);
+                       newton(LinearSolverKind::direct, options));
   int pairs = 0;
   for (int frame = 0; frame < 12; ++frame) {
     const auto report = sim.step(0.2);
@@ -247,12 +253,12 @@ TEST(ImplicitEuler, NewtonConvergesQuadraticallyNearTheSolution) {
 
 TEST(ImplicitEuler, AlwaysProjectingConvergesButMoreSlowly) {
   // The projected Hessian is a safe but inexact model where springs are compressed.
-  ImplicitOptions exact, projected;
+  NewtonSettings exact, projected;
   projected.projection = HessianProjection::always;
   auto a = simulator(make_grid_cloth({.cells = 6, .stiffness = 1e4}),
-                     IntegratorKind::implicit_direct, exact);
+                     newton(LinearSolverKind::direct, exact));
   auto b = simulator(make_grid_cloth({.cells = 6, .stiffness = 1e4}),
-                     IntegratorKind::implicit_direct, projected);
+                     newton(LinearSolverKind::direct, projected));
   int newton_exact = 0, newton_projected = 0;
   for (int frame = 0; frame < 12; ++frame) {
     const auto ra = a.step(0.2), rb = b.step(0.2);
@@ -271,8 +277,8 @@ TEST(ImplicitEuler, AlwaysProjectingConvergesButMoreSlowly) {
 }
 
 TEST(ImplicitEuler, DirectAndPcgReachTheSameState) {
-  auto direct = simulator(make_grid_cloth(), IntegratorKind::implicit_direct);
-  auto pcg = simulator(make_grid_cloth(), IntegratorKind::implicit_pcg);
+  auto direct = simulator(make_grid_cloth(), newton(LinearSolverKind::direct));
+  auto pcg = simulator(make_grid_cloth(), newton(LinearSolverKind::pcg));
   for (int frame = 0; frame < 120; ++frame) {
     ASSERT_TRUE(direct.step(kFrame));
     ASSERT_TRUE(pcg.step(kFrame));
@@ -281,24 +287,21 @@ TEST(ImplicitEuler, DirectAndPcgReachTheSameState) {
 }
 
 TEST(ClothSimulator, RejectsBadInput) {
-  auto sim = simulator(make_grid_cloth(), IntegratorKind::implicit_pcg);
+  auto sim = simulator(make_grid_cloth(), newton(LinearSolverKind::pcg));
   EXPECT_EQ(sim.step(0.0).error().message, "time step must be between 1e-06 and 10, got 0");
   EXPECT_EQ(sim.step(std::nan("")).error().message,
             "time step must be between 1e-06 and 10, got nan");
-  ImplicitOptions bad;
+  NewtonSettings bad;
   bad.tolerance = 0.0;
-  EXPECT_EQ(ClothSimulator::create(make_grid_cloth(), {IntegratorKind::implicit_pcg, 0, bad})
-                .error()
-                .message,
+  EXPECT_EQ(ClothSimulator::create(make_grid_cloth(), {bad, 0}).error().message,
             "tolerance must be in (0, 1), got 0");
-  EXPECT_EQ(ClothSimulator::create(make_grid_cloth(), {IntegratorKind::explicit_euler, -1, {}})
-                .error()
-                .message,
-            "substeps must be between 1 and 100000 (or 0 for the default), got -1");
+  EXPECT_EQ(
+      ClothSimulator::create(make_grid_cloth(), {ExplicitEulerSettings{}, -1}).error().message,
+      "substeps must be between 1 and 100000 (or 0 for the default), got -1");
 }
 
 TEST(ClothSimulator, SetStateRestartsFromASavedState) {
-  auto sim = simulator(make_grid_cloth({.cells = 4}), IntegratorKind::implicit_pcg);
+  auto sim = simulator(make_grid_cloth({.cells = 4}), newton(LinearSolverKind::pcg));
   for (int frame = 0; frame < 10; ++frame) ASSERT_TRUE(sim.step(kFrame));
   const ClothState saved = sim.state();
   ASSERT_TRUE(sim.step(kFrame));
@@ -314,8 +317,8 @@ TEST(ClothSimulator, SetStateRestartsFromASavedState) {
 }
 
 TEST(ClothSimulator, ExplicitEulerWithTheLabsSubstepsIsStableAndAgreesWithImplicit) {
-  auto explicit_euler = simulator(make_grid_cloth(), IntegratorKind::explicit_euler);
-  auto implicit = simulator(make_grid_cloth(), IntegratorKind::implicit_pcg);
+  auto explicit_euler = simulator(make_grid_cloth(), ExplicitEulerSettings{});
+  auto implicit = simulator(make_grid_cloth(), newton(LinearSolverKind::pcg));
   for (int frame = 0; frame < 60; ++frame) {
     const auto report = explicit_euler.step(kFrame);
     ASSERT_TRUE(report);
@@ -340,8 +343,8 @@ TEST(ClothSimulator, ExternalForcesAccelerateLikeGravity) {
   desc.particles = {{Vec3::Zero(), Vec3::Zero(), 2.0, false},
                     {Vec3(1, 0, 0), Vec3::Zero(), 1.0, true}};
   desc.gravity = 0.0;
-  for (IntegratorKind kind : {IntegratorKind::implicit_pcg, IntegratorKind::explicit_euler}) {
-    auto sim = ClothSimulator::create(desc, {kind, 1, {}});
+  for (const IntegratorEntry& entry : cloth_integrators()) {
+    auto sim = ClothSimulator::create(desc, {entry.defaults, 1});
     ASSERT_TRUE(sim.has_value()) << sim.error().message;
     Eigen::VectorXd forces = Eigen::VectorXd::Zero(6);
     forces.segment<3>(0) = Vec3(4.0, 0.0, -2.0);  // a = (2, 0, -1)

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "animkit/cloth/integrator_registry.h"
+
 namespace animkit {
 namespace {
 
@@ -121,8 +123,8 @@ TEST(ClothScene, ReleasingTheDragRemovesItsForce) {
 TEST(ClothScene, TheMouseSpringStaysStableAtTheLargestTimeStep) {
   ClothSceneOptions options;
   options.time_step = 0.1;  // the viewer's slider maximum
-  for (IntegratorKind kind : {IntegratorKind::implicit_pcg, IntegratorKind::explicit_euler}) {
-    options.simulation.integrator = kind;
+  for (const IntegratorEntry& entry : cloth_integrators()) {
+    options.simulation.integrator = entry.defaults;
     auto scene = ClothScene::create(options);
     ASSERT_TRUE(scene.has_value());
     const int p = free_corner(*scene);

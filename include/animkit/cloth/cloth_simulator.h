@@ -1,34 +1,24 @@
 #pragma once
 // A cloth being simulated: the model, its state, and the integrator that advances it. One
-// entry point for the CLI, the viewer and the benchmarks; integrators are chosen by an enum.
+// entry point for the CLI, the viewer and the benchmarks; integrators are chosen by their
+// settings (integrator_settings.h), listed once in integrator_registry.h.
 #include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
 
 #include "animkit/cloth/cloth_model.h"
-#include "animkit/cloth/implicit_euler.h"
+#include "animkit/cloth/integrator_settings.h"
 #include "animkit/cloth/step_report.h"
 
 namespace animkit {
 
-enum class IntegratorKind {
-  explicit_euler,   ///< "explicit": the lab's starting point, many substeps per frame
-  implicit_direct,  ///< "implicit-direct": Newton, sparse LDL^T on the fixed pattern
-  implicit_pcg,     ///< "implicit-pcg": Newton, block-Jacobi PCG (the fastest; the default)
-};
-
-std::string_view to_string(IntegratorKind kind);
-std::optional<IntegratorKind> parse_integrator(std::string_view name);
-std::span<const IntegratorKind> all_integrators();
-
 struct SimulationOptions {
-  IntegratorKind integrator = IntegratorKind::implicit_pcg;
-  /// Substeps per step, >= 1; 0 picks the integrator's default: 1000 for explicit Euler (the
-  /// lab's), 1 for implicit Euler (stable at any step).
+  /// Which integrator, with its settings: the lab's implicit Euler (Newton + PCG) by default.
+  IntegratorSettings integrator = NewtonSettings{};
+  /// Substeps per step, >= 1; 0 picks the integrator's default (IntegratorEntry): 1000 for
+  /// explicit Euler (the lab's), 1 for the implicit ones (stable at any step).
   int substeps = 0;
-  /// Newton settings for the implicit integrators (the linear solver follows `integrator`).
-  ImplicitOptions implicit;
 
   std::optional<Error> validate() const;
   int effective_substeps() const;

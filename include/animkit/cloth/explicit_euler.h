@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 
 #include "animkit/cloth/cloth_model.h"
+#include "animkit/cloth/integrator.h"
 
 namespace animkit {
 
@@ -11,14 +12,14 @@ namespace animkit {
 void cloth_forces(const ClothModel& model, const Eigen::VectorXd& positions,
                   const Eigen::VectorXd& velocities, Eigen::VectorXd& forces);
 
-class ExplicitEuler {
+class ExplicitEuler final : public ClothIntegrator {
  public:
   explicit ExplicitEuler(const ClothModel& model);
 
-  /// `substeps` substeps of h / substeps each, from `state` into `state`. `external_forces`
-  /// (3N, may be null) are added to the forces, constant over the step.
-  void step(ClothState& state, double h, int substeps,
-            const Eigen::VectorXd* external_forces = nullptr);
+  /// One substep of h, from `state` into `state`. `external_forces` (3N, may be null) are added
+  /// to the forces.
+  void step(ClothState& state, double h, StepReport& report,
+            const Eigen::VectorXd* external_forces = nullptr) override;
 
  private:
   const ClothModel& model_;

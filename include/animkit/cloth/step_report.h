@@ -4,12 +4,16 @@
 
 namespace animkit {
 
-/// One Newton iteration of an implicit step (recorded when ImplicitOptions::record_iterations).
-struct NewtonIterationRecord {
+/// One iteration of an implicit integrator (recorded when its settings ask for it): Newton
+/// iterations, local/global iterations, VBD sweeps. The fields after `ms` are Newton's.
+struct IterationRecord {
+  double gradient_norm = 0.0;  ///< |grad g| at the iteration's end (the accepted x_{k+1})
+  /// Wall time from the substep's start to the end of this iteration (ms), the x-axis of the
+  /// convergence study.
+  double ms = 0.0;
   double objective = 0.0;        ///< g(x_k), evaluated on its own
   double objective_after = 0.0;  ///< g(x_k + alpha dx), evaluated on its own (for checking)
   double decrease = 0.0;         ///< g(x_k + alpha dx) - g(x_k) as the line search computed it
-  double gradient_norm = 0.0;    ///< |grad g(x_k)|
   double slope = 0.0;            ///< grad g(x_k) . dx (negative for a descent direction)
   double alpha = 0.0;            ///< accepted step length
   int line_search_steps = 0;     ///< backtracking reductions before acceptance
@@ -19,8 +23,10 @@ struct NewtonIterationRecord {
 
 struct StepReport {
   int substeps = 1;
-  int substeps_done = 0;             ///< substeps completed so far (while the step runs)
-  int newton_iterations = 0;         ///< summed over substeps (0 for explicit Euler)
+  int substeps_done = 0;  ///< substeps completed so far (while the step runs)
+  /// Iterations of the implicit solver (Newton iterations, local/global iterations, VBD
+  /// sweeps), summed over substeps (0 for explicit Euler).
+  int newton_iterations = 0;
   int line_search_steps = 0;         ///< backtracking reductions, summed
   int linear_iterations = 0;         ///< PCG iterations, summed (0 for a direct solve)
   int projected_iterations = 0;      ///< Newton iterations that needed the projected Hessian
@@ -34,7 +40,7 @@ struct StepReport {
   /// Time per stage (ms, summed over substeps): gradient and objective evaluations, Hessian
   /// assembly, linear solves, line search.
   double ms_gradient = 0.0, ms_hessian = 0.0, ms_linear_solve = 0.0, ms_line_search = 0.0;
-  std::vector<NewtonIterationRecord> iterations;  ///< empty unless recording was asked for
+  std::vector<IterationRecord> iterations;  ///< empty unless recording was asked for
 };
 
 }  // namespace animkit

@@ -1,0 +1,27 @@
+#pragma once
+// What every cloth integrator does: advance a state by one substep of h seconds, adding what it
+// did to a StepReport. ClothSimulator owns one, made by make_integrator() from the settings.
+#include <Eigen/Core>
+#include <memory>
+
+#include "animkit/cloth/cloth_model.h"
+#include "animkit/cloth/integrator_settings.h"
+#include "animkit/cloth/step_report.h"
+
+namespace animkit {
+
+class ClothIntegrator {
+ public:
+  virtual ~ClothIntegrator() = default;
+  /// One substep of h > 0 from `state` into `state`. `external_forces` (3N, may be null) act
+  /// like gravity, constant over the substep.
+  virtual void step(ClothState& state, double h, StepReport& report,
+                    const Eigen::VectorXd* external_forces) = 0;
+};
+
+/// The integrator `settings` selects, for `model` (kept by reference: it must outlive the
+/// integrator and stay where it is). The settings must be valid.
+std::unique_ptr<ClothIntegrator> make_integrator(const ClothModel& model,
+                                                 const IntegratorSettings& settings);
+
+}  // namespace animkit

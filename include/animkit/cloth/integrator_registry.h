@@ -1,0 +1,32 @@
+#pragma once
+// The one list of cloth integrators. The CLI's --integrator choices, the viewer's menu, the
+// benchmarks and the parametrized tests all iterate it; nothing else types integrator names.
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "animkit/cloth/integrator_settings.h"
+
+namespace animkit {
+
+struct IntegratorEntry {
+  std::string_view name;     ///< what the CLI and the viewer accept, e.g. "implicit-pcg"
+  std::string_view summary;  ///< one line for menus and --help
+  IntegratorSettings defaults;
+  /// Substeps per step when the caller asks for the default (0): explicit Euler needs many.
+  int default_substeps = 1;
+};
+
+/// Every integrator, the default (the lab's implicit Euler with PCG) first.
+std::span<const IntegratorEntry> cloth_integrators();
+
+/// The entry called `name`, or null.
+const IntegratorEntry* find_integrator(std::string_view name);
+
+/// The entry whose integrator `settings` selects (never null: every alternative is listed).
+const IntegratorEntry& integrator_entry(const IntegratorSettings& settings);
+
+/// "implicit-pcg, implicit-direct, ...", for messages.
+std::string integrator_names();
+
+}  // namespace animkit

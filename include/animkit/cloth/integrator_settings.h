@@ -1,0 +1,74 @@
+#pragma once
+// Every cloth integrator's own settings, and the variant that says which integrator a simulation
+// uses. The implicit ones all minimize the same incremental potential g (incremental_potential.h)
+// and stop on the same test, |grad g| <= tolerance |grad g at the prediction y| (or the rounding
+// floor, whichever is higher), so their results and costs can be compared one to one.
+#include <optional>
+#include <variant>
+
+#include "animkit/core/result.h"
+
+namespace animkit {
+
+/// Explicit (symplectic) Euler: the lab's starting point. Needs many substeps to stay stable.
+/// Its only setting is how many substeps a step takes (SimulationOptions::substeps; the registry
+/// gives the lab's 1000 as its default).
+struct ExplicitEulerSettings {
+  std::optional<Error> validate() const { return std::nullopt; }
+};
+
+/// How each Newton iteration solves Hessian * dx = -gradient. All reach the same x.
+enum class LinearSolverKind {
+  /// Sparse LDL^T (Eigen SimplicialLDLT) on the fixed pattern, stored as its upper triangle
+  /// in AMD order: ordering and symbolic analysis are done once per model, each iteration only
+  /// factorizes numerically.
+  direct,
+  /// Conjugate gradients with a block-Jacobi preconditioner, solved inexactly: to a relative
+  /// residual that tightens as Newton converges (Eisenstat-Walker forcing), so early
+  /// iterations cost a few matrix-vector products and Newton keeps its fast local convergence.
+  pcg,
+};
+
+/// When Newton uses the projected (clamped, PSD) spring Hessian instead of the exact one.
+/// Either way every Newton direction is a descent direction.
+enum class HessianProjection {
+  /// The exact Hessian, which converges quadratically, as long as the whole system matrix
+  /// M/h^2 + H stays positive definite (the inertia term usually outweighs compressed
+  /// springs); an iteration whose solve meets negative curvature (a non-positive LDL^T pivot,
+  /// or p.Ap <= 0 in CG) is redone with the projected Hessian.
+  when_indefinite,
+  /// The projected Hessian every iteration: SPD by construction, but only linearly
+  /// convergent where springs are compressed.
+  always,
+};
+
+/// Implicit Euler by Newton's method with a backtracking line search (SPEC.md section 4).
+struct NewtonSettings {
+  LinearSolverKind linear_solver = LinearSolverKind::pcg;
+  /// Stops when |grad g| <= tolerance * |grad g at x = y|. (0, 1).
+  double tolerance = 1e-6;
+  int max_iterations = 50;         ///< Newton iterations per substep, >= 1
+  double beta = 0.5;               ///< line-search step shrink factor, in (0, 1)
+  double gamma = 1e-4;             ///< Armijo sufficient-decrease constant, in (0, 1)
+  int max_line_search_steps = 50;  ///< backtracking reductions before giving up, >= 1
+  HessianProjection projection = HessianProjection::when_indefinite;
+  bool record_iterations = false;  ///< fill StepReport::iterations
+
+  std::optional<Error> validate() const;
+};
+
+/// Which integrator a simulation uses, with its settings. Adding an integrator adds one
+/// alternative here and one entry in the registry (integrator_registry.h).
+using IntegratorSettings = std::variant<ExplicitEulerSettings, NewtonSettings>;
+
+/// The first invalid setting, or nothing.
+std::optional<Error> validate(const IntegratorSettings& settings);
+
+/// The stopping tolerance of an implicit integrator (nothing for explicit Euler), and setting it
+/// (ignored by explicit Euler, which has no iterations to stop).
+std::optional<double> tolerance_of(const IntegratorSettings& settings);
+void set_tolerance(IntegratorSettings& settings, double tolerance);
+/// Asks an implicit integrator to record every iteration into StepReport::iterations.
+void set_record_iterations(IntegratorSettings& settings, bool record);
+
+}  // namespace animkit
