@@ -20,12 +20,6 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Floor under the gradient tolerance. The gradient sums the inertia term M (x - y) / h^2 and
-// spring forces k (l - L) u, each computed from coordinates with relative rounding of a few
-// eps, so below ~16 eps (|M y| / h^2 + |(k L) over springs|) it is rounding noise that no
-// solver can shrink further.
-constexpr double kRoundingFloor = 16.0 * std::numeric_limits<double>::epsilon();
-
 }  // namespace
 
 std::optional<Error> NewtonSettings::validate() const {
@@ -67,10 +61,6 @@ ImplicitEuler::ImplicitEuler(const ClothModel& model, const NewtonSettings& opti
       dx_(3 * model.particle_count()),
       trial_(3 * model.particle_count()),
       rhs_(3 * model.particle_count()) {
-  for (int k = 0; k < model.spring_count(); ++k) {
-    spring_force_scale_ += std::pow(model.stiffness[k] * model.rest_length[k], 2);
-  }
-  spring_force_scale_ = std::sqrt(spring_force_scale_);
   if (options_.linear_solver == LinearSolverKind::direct) {
     direct_ = std::make_unique<DirectSolver>();
     direct_->pattern = build_hessian_pattern(model, PatternLayout::upper_amd);
@@ -119,13 +109,7 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
   const double start_norm = gradient_norm;
   if (report.substeps_done == 0) report.gradient_norm_start = start_norm;
   ++report.substeps_done;
-  double inertia_scale = 0.0;  // |M y|
-  for (int i = 0; i < model_.particle_count(); ++i) {
-    inertia_scale += model_.mass[i] * model_.mass[i] * x_.segment<3>(3 * i).squaredNorm();
-  }
-  const double stop =
-      std::max(options_.tolerance * start_norm,
-               kRoundingFloor * (std::sqrt(inertia_scale) / (h * h) + spring_force_scale_));
+  const double stop = std::max(options_.tolerance * start_norm, potential_.gradient_floor());
   report.gradient_tolerance = std::max(report.gradient_tolerance, stop);
   // Written so that a NaN or an infinite norm never counts as converged (inf <= inf is true).
   const auto reached = [&stop](double norm) { return std::isfinite(norm) && norm <= stop; };

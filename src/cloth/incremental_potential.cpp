@@ -1,6 +1,8 @@
 #include "animkit/cloth/incremental_potential.h"
 
 #include <cassert>
+#include <cmath>
+#include <limits>
 
 #include "animkit/cloth/spring_energy.h"
 
@@ -16,7 +18,12 @@ IncrementalPotential::IncrementalPotential(const ClothModel& model)
     : model_(model),
       y_(3 * model.particle_count()),
       x_start_(3 * model.particle_count()),
-      damping_axis_(model.springs.size(), Vec3::Zero()) {}
+      damping_axis_(model.springs.size(), Vec3::Zero()) {
+  for (int k = 0; k < model.spring_count(); ++k) {
+    spring_force_scale_ += std::pow(model.stiffness[k] * model.rest_length[k], 2);
+  }
+  spring_force_scale_ = std::sqrt(spring_force_scale_);
+}
 
 void IncrementalPotential::prepare(const ClothState& state, double h,
                                    const Eigen::VectorXd* external_forces) {
@@ -34,6 +41,12 @@ void IncrementalPotential::prepare(const ClothState& state, double h,
       }
     }
   }
+  double inertia_scale = 0.0;  // |M y|^2
+  for (int i = 0; i < model_.particle_count(); ++i) {
+    inertia_scale += model_.mass[i] * model_.mass[i] * y_.segment<3>(3 * i).squaredNorm();
+  }
+  constexpr double kRounding = 16.0 * std::numeric_limits<double>::epsilon();
+  gradient_floor_ = kRounding * (std::sqrt(inertia_scale) / (h * h) + spring_force_scale_);
   for (int s = 0; s < model_.spring_count(); ++s) {
     const auto [a, b] = model_.springs[s];
     const Vec3 d = at(x_start_, a) - at(x_start_, b);

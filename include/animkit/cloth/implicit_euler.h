@@ -42,7 +42,6 @@ class ImplicitEuler final : public ClothIntegrator {
   BlockHessian hessian_;
   BlockJacobiPcg pcg_;
   std::unique_ptr<DirectSolver> direct_;
-  double spring_force_scale_ = 0.0;  // |(k L) over springs|, for the rounding floor
   Eigen::VectorXd x_, gradient_, dx_, trial_, rhs_;
 };
 

@@ -31,6 +31,12 @@ class IncrementalPotential {
   /// The predicted positions y, where Newton starts (pinned particles: x_n).
   const Eigen::VectorXd& predicted() const { return y_; }
 
+  /// The gradient norm below which |grad g| is rounding noise that no solver can shrink: every
+  /// solver's stopping test is max(tolerance |grad g(y)|, this). The gradient sums the inertia
+  /// term M (x - y) / h^2 and spring forces k (l - L) u, each computed from coordinates with a
+  /// relative rounding of a few eps, so the floor is 16 eps (|M y| / h^2 + |(k L) over springs|).
+  double gradient_floor() const { return gradient_floor_; }
+
   /// g(x).
   double value(const Eigen::VectorXd& x) const;
   /// g(x + step) - g(x), computed term by term in forms free of cancellation (e.g.
@@ -48,6 +54,8 @@ class IncrementalPotential {
  private:
   const ClothModel& model_;
   double h_ = 0.0;
+  double spring_force_scale_ = 0.0;  // |(k L) over springs|
+  double gradient_floor_ = 0.0;
   Eigen::VectorXd y_, x_start_;
   std::vector<Vec3> damping_axis_;  // per spring: unit axis at x_n (zero if degenerate)
 };
