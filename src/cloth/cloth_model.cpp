@@ -1,8 +1,12 @@
 #include "animkit/cloth/cloth_model.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
+#include <utility>
 
+#include "animkit/cloth/bend_energy.h"
 #include "animkit/cloth/parameter_ranges.h"
 #include "animkit/cloth/spring_energy.h"
 #include "animkit/core/validation.h"
@@ -68,6 +72,20 @@ std::optional<Error> ClothDesc::validate() const {
       return Error{spring(s) + " has zero rest length"};
     }
   }
+  for (std::size_t k = 0; k < bends.size(); ++k) {
+    const BendDesc& b = bends[k];
+    const std::string name = "bend " + std::to_string(k);
+    for (int v : {b.a, b.b, b.c}) {
+      if (v < 0 || v >= n) return Error{name + " has no particle " + std::to_string(v)};
+    }
+    if (b.a == b.b || b.b == b.c || b.a == b.c) {
+      return Error{name + " joins particle " + std::to_string(b.a == b.b ? b.b : b.c) +
+                   " to itself"};
+    }
+    if (!kStiffnessRange.contains(b.stiffness)) {
+      return Error{kStiffnessRange.refusal(name + " stiffness", b.stiffness)};
+    }
+  }
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     for (int v : triangles[t]) {
       if (v < 0 || v >= n)
@@ -98,6 +116,27 @@ Result<BuiltCloth> build_cloth(const ClothDesc& desc) {
     m.rest_length.push_back(resolved_rest_length(desc, s));
     m.stiffness.push_back(s.stiffness);
   }
+  // Each bend's three pairs, found among the springs or added as coupling-only springs.
+  std::map<std::pair<int, int>, int> spring_of;
+  for (int s = 0; s < m.spring_count(); ++s) {
+    const auto [a, b] = m.springs[s];
+    spring_of.emplace(std::minmax(a, b), s);
+  }
+  const auto spring_joining = [&](int a, int b) {
+    const auto [it, added] = spring_of.emplace(std::minmax(a, b), m.spring_count());
+    if (added) {
+      m.springs.push_back({a, b});
+      m.rest_length.push_back((desc.particles[a].position - desc.particles[b].position).norm());
+      m.stiffness.push_back(0.0);
+    }
+    return it->second;
+  };
+  for (const BendDesc& b : desc.bends) {
+    m.bends.push_back({b.a, b.b, b.c});
+    m.bend_stiffness.push_back(b.stiffness);
+    m.bend_springs.push_back(
+        {spring_joining(b.a, b.b), spring_joining(b.b, b.c), spring_joining(b.a, b.c)});
+  }
   m.triangles = desc.triangles;
   m.gravity = desc.gravity;
   m.damping = desc.damping;
@@ -114,6 +153,11 @@ ClothEnergy cloth_energy(const ClothModel& model, const ClothState& state) {
     const auto [a, b] = model.springs[s];
     e.elastic += spring_energy(state.position(a), state.position(b), model.stiffness[s],
                                model.rest_length[s]);
+  }
+  for (int k = 0; k < model.bend_count(); ++k) {
+    const auto [a, b, c] = model.bends[k];
+    e.elastic += bend_energy(state.position(a), state.position(b), state.position(c),
+                             model.bend_stiffness[k]);
   }
   e.total = e.kinetic + e.elastic + e.gravitational;
   return e;

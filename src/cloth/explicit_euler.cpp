@@ -1,5 +1,7 @@
 #include "animkit/cloth/explicit_euler.h"
 
+#include "animkit/cloth/bend_energy.h"
+
 namespace animkit {
 
 void cloth_forces(const ClothModel& model, const Eigen::VectorXd& positions,
@@ -11,7 +13,8 @@ void cloth_forces(const ClothModel& model, const Eigen::VectorXd& positions,
     const auto [a, b] = model.springs[s];
     const Vec3 d = positions.segment<3>(3 * b) - positions.segment<3>(3 * a);
     const double length = d.norm();
-    if (length == 0.0) continue;  // no direction: the spring cannot push either way
+    // No direction: the spring cannot push either way. Stiffness 0: a bend's coupling spring.
+    if (length == 0.0 || model.stiffness[s] == 0.0) continue;
     const Vec3 u = d / length;
     const double relative_speed =
         (velocities.segment<3>(3 * b) - velocities.segment<3>(3 * a)).dot(u);
@@ -20,6 +23,13 @@ void cloth_forces(const ClothModel& model, const Eigen::VectorXd& positions,
         (model.stiffness[s] * (length - model.rest_length[s]) + model.damping * relative_speed) * u;
     forces.segment<3>(3 * a) += f;
     forces.segment<3>(3 * b) -= f;
+  }
+  for (int k = 0; k < model.bend_count(); ++k) {
+    const auto& p = model.bends[k];
+    const Vec3 e = model.bend_stiffness[k] * bend_vector(positions.segment<3>(3 * p[0]),
+                                                         positions.segment<3>(3 * p[1]),
+                                                         positions.segment<3>(3 * p[2]));
+    for (int j = 0; j < 3; ++j) forces.segment<3>(3 * p[j]) -= kBendWeights[j] * e;
   }
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "animkit/cloth/bend_energy.h"
 #include "animkit/cloth/spring_energy.h"
 
 namespace animkit {
@@ -51,7 +52,8 @@ void IncrementalPotential::prepare(const ClothState& state, double h,
     const auto [a, b] = model_.springs[s];
     const Vec3 d = at(x_start_, a) - at(x_start_, b);
     const double length = d.norm();
-    damping_axis_[s] = length > 0.0 ? Vec3(d / length) : Vec3::Zero();
+    // No dashpot on a degenerate spring, nor on a bend's coupling-only spring (stiffness 0).
+    damping_axis_[s] = length > 0.0 && model_.stiffness[s] > 0.0 ? Vec3(d / length) : Vec3::Zero();
   }
 }
 
@@ -67,6 +69,10 @@ double IncrementalPotential::value(const Eigen::VectorXd& x) const {
     const double axial =
         (at(x, a) - at(x_start_, a) - at(x, b) + at(x_start_, b)).dot(damping_axis_[s]);
     damping += axial * axial;
+  }
+  for (int k = 0; k < model_.bend_count(); ++k) {
+    const auto [a, b, c] = model_.bends[k];
+    elastic += bend_energy(at(x, a), at(x, b), at(x, c), model_.bend_stiffness[k]);
   }
   return inertia / (2.0 * h_ * h_) + elastic + model_.damping / (2.0 * h_) * damping;
 }
@@ -95,6 +101,13 @@ double IncrementalPotential::difference(const Eigen::VectorXd& x,
     const double dq = ds.dot(u);
     damping += dq * (2.0 * q + dq);
   }
+  for (int k = 0; k < model_.bend_count(); ++k) {
+    // |e + de|^2 - |e|^2 = de.(2e + de).
+    const auto [a, b, c] = model_.bends[k];
+    const Vec3 e = bend_vector(at(x, a), at(x, b), at(x, c));
+    const Vec3 de = bend_vector(at(step, a), at(step, b), at(step, c));
+    elastic += 0.5 * model_.bend_stiffness[k] * de.dot(2.0 * e + de);
+  }
   return inertia / (2.0 * h_ * h_) + elastic + model_.damping / (2.0 * h_) * damping;
 }
 
@@ -112,6 +125,12 @@ void IncrementalPotential::gradient(const Eigen::VectorXd& x, Eigen::VectorXd& g
                    (c * axial) * u;
     gradient.segment<3>(3 * a) += g;
     gradient.segment<3>(3 * b) -= g;
+  }
+  for (int k = 0; k < model_.bend_count(); ++k) {
+    const auto& particles = model_.bends[k];
+    const Vec3 e = model_.bend_stiffness[k] *
+                   bend_vector(at(x, particles[0]), at(x, particles[1]), at(x, particles[2]));
+    for (int j = 0; j < 3; ++j) gradient.segment<3>(3 * particles[j]) += kBendWeights[j] * e;
   }
   for (int i = 0; i < model_.particle_count(); ++i) {
     if (model_.pinned[i]) gradient.segment<3>(3 * i).setZero();
@@ -136,6 +155,17 @@ void IncrementalPotential::hessian(const Eigen::VectorXd& x, BlockHessian& block
     if (free_a) blocks.diagonal[a] += k;
     if (free_b) blocks.diagonal[b] += k;
     blocks.coupling[s] = k;  // a pinned end: the products act on the free end only
+  }
+  // Bends: constant blocks on their three springs (see bend_energy.h).
+  for (int k = 0; k < model_.bend_count(); ++k) {
+    for (int j = 0; j < 3; ++j) {
+      const int s = model_.bend_springs[k][j];
+      const double coupling = kBendCouplings[j] * model_.bend_stiffness[k];
+      const auto [a, b] = model_.springs[s];
+      if (!model_.pinned[a]) blocks.diagonal[a].diagonal().array() += coupling;
+      if (!model_.pinned[b]) blocks.diagonal[b].diagonal().array() += coupling;
+      blocks.coupling[s].diagonal().array() += coupling;
+    }
   }
 }
 

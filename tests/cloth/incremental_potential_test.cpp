@@ -14,7 +14,12 @@ namespace {
 class IncrementalPotentialTest : public testing::Test {
  protected:
   void SetUp() override {
-    auto built = build_cloth(make_grid_cloth({.cells = 3, .damping = 0.7}));
+    // With bends along a grid line (its pairs are springs) and along a diagonal (its outer
+    // pair is not: build_cloth adds a coupling-only spring for it).
+    ClothDesc desc = make_grid_cloth({.cells = 3, .damping = 0.7});
+    desc.bends = {{grid_index(3, 1, 0), grid_index(3, 1, 1), grid_index(3, 1, 2), 40.0},
+                  {grid_index(3, 0, 0), grid_index(3, 1, 1), grid_index(3, 2, 2), 25.0}};
+    auto built = build_cloth(desc);
     ASSERT_TRUE(built);
     model = built->model;
     state = built->state;

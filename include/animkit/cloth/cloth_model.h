@@ -23,10 +23,22 @@ struct SpringDesc {
   double stiffness = 100.0;   ///< k > 0 (force per unit length); lab range 10..300, default 100
 };
 
+/// A bending element over three particles a, b, c along a line of the sheet (b in the middle):
+/// E = 1/2 stiffness |x_a - 2 x_b + x_c|^2, the squared discrete curvature of the line, zero
+/// for any rigid motion of a straight line, with a constant Hessian (a quadratic bending model
+/// in the spirit of Bergou et al. 2006, "A quadratic bending model for inextensible surfaces").
+/// For a sheet with bending stiffness B (N m) and spacing s, stiffness = B / s^2 (N/m) gives
+/// 1/2 B kappa^2 per unit area (see material.h).
+struct BendDesc {
+  int a = 0, b = 0, c = 0;  ///< distinct particle indices; b is the middle one
+  double stiffness = 0.0;   ///< N/m, in kStiffnessRange
+};
+
 /// Editable description of a cloth.
 struct ClothDesc {
   std::vector<ParticleDesc> particles;
   std::vector<SpringDesc> springs;
+  std::vector<BendDesc> bends;  ///< may be empty (the lab's cloth bends through its springs)
   /// Surface triangles over the particles, for drawing and OBJ export only (the physics is
   /// the springs). May be empty.
   std::vector<std::array<int, 3>> triangles;
@@ -43,15 +55,23 @@ struct ClothDesc {
 struct ClothModel {
   std::vector<double> mass;  ///< per particle
   std::vector<char> pinned;  ///< per particle, 0 or 1
+  /// The described springs, then one spring of stiffness 0 for each pair a bend couples that
+  /// no spring joins: it carries the bend's Hessian blocks (solvers store one 3x3 block per
+  /// spring), no force and no dashpot.
   std::vector<std::array<int, 2>> springs;
-  std::vector<double> rest_length;  ///< per spring
-  std::vector<double> stiffness;    ///< per spring
+  std::vector<double> rest_length;        ///< per spring
+  std::vector<double> stiffness;          ///< per spring; 0 only for the bends' coupling springs
+  std::vector<std::array<int, 3>> bends;  ///< per bend: particles a, b (middle), c
+  std::vector<double> bend_stiffness;     ///< per bend
+  /// Per bend: the springs joining (a, b), (b, c) and (a, c), which hold its Hessian blocks.
+  std::vector<std::array<int, 3>> bend_springs;
   std::vector<std::array<int, 3>> triangles;
   double gravity = 0.3;
   double damping = 0.2;
 
   int particle_count() const { return static_cast<int>(mass.size()); }
   int spring_count() const { return static_cast<int>(springs.size()); }
+  int bend_count() const { return static_cast<int>(bends.size()); }
 };
 
 /// Positions and velocities of every particle, 3 doubles each, particle-major
@@ -71,7 +91,8 @@ struct BuiltCloth {
 };
 Result<BuiltCloth> build_cloth(const ClothDesc& desc);
 
-/// Energies of a state: kinetic 1/2 sum m v^2, elastic sum 1/2 k (l - L)^2 and gravitational
+/// Energies of a state: kinetic 1/2 sum m v^2, elastic sum 1/2 k (l - L)^2 plus the bends' and
+/// gravitational
 /// sum m g y; `total` is their sum. Damping removes total energy over time.
 struct ClothEnergy {
   double kinetic = 0.0, elastic = 0.0, gravitational = 0.0, total = 0.0;
