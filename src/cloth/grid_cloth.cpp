@@ -27,23 +27,38 @@ std::optional<Error> GridClothOptions::validate() const {
   }
   if (!kDampingRange.contains(damping)) return Error{kDampingRange.refusal("damping", damping)};
   if (!kGravityRange.contains(gravity)) return Error{kGravityRange.refusal("gravity", gravity)};
+  if (material) {
+    if (auto error = material->validate()) return error;
+    // The smallest and largest values the mapping gives at this resolution.
+    const double spacing = size / cells;
+    const std::string at = " at " + std::to_string(cells + 1) + " x " + std::to_string(cells + 1) +
+                           " particles and " + format_number(size) + " m";
+    const double corner_mass = 0.25 * material->density * spacing * spacing;
+    if (!kMassRange.contains(corner_mass)) {
+      return Error{kMassRange.refusal("the material's particle mass" + at, corner_mass)};
+    }
+    const double axis = 0.5 * (material->stretch - material->shear);
+    if (!kStiffnessRange.contains(axis))
+      return Error{kStiffnessRange.refusal("the material's spring stiffness" + at, axis)};
+    const double bend = material->bending / (spacing * spacing);
+    if (bend > 0.0 && !kStiffnessRange.contains(bend))
+      return Error{kStiffnessRange.refusal("the material's bend stiffness" + at, bend)};
+  }
   return std::nullopt;
 }
 
-ClothDesc make_grid_cloth(const GridClothOptions& o) {
-  ClothDesc desc;
-  desc.gravity = o.gravity;
-  desc.damping = o.damping;
-  if (o.cells < 1) return desc;  // no particles: validate() says so
+namespace {
+
+// The lab's springs: to the neighbours at distance 1 and 2 along both axes and along both
+// diagonals, all of one stiffness; every particle of one mass.
+void add_lab_elements(const GridClothOptions& o, ClothDesc& desc) {
   const int n = o.cells;
-  const double spacing = o.size / n;
   const auto id = [n](int i, int j) { return grid_index(n, i, j); };
   const auto spring = [&](int a, int b) { desc.springs.push_back({a, b, -1.0, o.stiffness}); };
   // Same particle and spring order as the lab's grid builder.
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j <= n; ++j) {
-      desc.particles.push_back(
-          {Vec3(i * spacing, o.height, j * spacing - 0.5 * o.size), Vec3::Zero(), o.mass, false});
+      desc.particles[id(i, j)].mass = o.mass;
       if (i > 0) spring(id(i, j), id(i - 1, j));
       if (i > 1) spring(id(i, j), id(i - 2, j));
       if (j > 0) spring(id(i, j), id(i, j - 1));
@@ -51,6 +66,54 @@ ClothDesc make_grid_cloth(const GridClothOptions& o) {
       if (i > 0 && j > 0) spring(id(i, j), id(i - 1, j - 1));
       if (i > 0 && j < n) spring(id(i, j), id(i - 1, j + 1));
     }
+  }
+}
+
+// A physical sheet (see material.h for the mapping): area-weighted masses, axis springs
+// stretch - shear (half on the border), diagonal springs shear, bends B / s^2 along both axes
+// (half on the border).
+void add_material_elements(const GridClothOptions& o, ClothDesc& desc) {
+  const ClothMaterial& m = *o.material;
+  const int n = o.cells;
+  const double spacing = o.size / n;
+  const auto id = [n](int i, int j) { return grid_index(n, i, j); };
+  const auto border = [n](int k) { return k == 0 || k == n; };
+  const auto share = [&](int k) { return border(k) ? 0.5 : 1.0; };  // of a row or column
+  const double axis = m.stretch - m.shear, bend = m.bending / (spacing * spacing);
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      desc.particles[id(i, j)].mass = m.density * spacing * spacing * share(i) * share(j);
+      if (i > 0) desc.springs.push_back({id(i, j), id(i - 1, j), -1.0, axis * share(j)});
+      if (j > 0) desc.springs.push_back({id(i, j), id(i, j - 1), -1.0, axis * share(i)});
+      if (i > 0 && j > 0) desc.springs.push_back({id(i, j), id(i - 1, j - 1), -1.0, m.shear});
+      if (i > 0 && j < n) desc.springs.push_back({id(i, j), id(i - 1, j + 1), -1.0, m.shear});
+      if (bend == 0.0) continue;
+      if (i > 1) desc.bends.push_back({id(i - 2, j), id(i - 1, j), id(i, j), bend * share(j)});
+      if (j > 1) desc.bends.push_back({id(i, j - 2), id(i, j - 1), id(i, j), bend * share(i)});
+    }
+  }
+}
+
+}  // namespace
+
+ClothDesc make_grid_cloth(const GridClothOptions& o) {
+  ClothDesc desc;
+  desc.gravity = o.gravity;
+  desc.damping = o.material ? o.material->damping : o.damping;
+  if (o.cells < 1) return desc;  // no particles: validate() says so
+  const int n = o.cells;
+  const double spacing = o.size / n;
+  const auto id = [n](int i, int j) { return grid_index(n, i, j); };
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      desc.particles.push_back(
+          {Vec3(i * spacing, o.height, j * spacing - 0.5 * o.size), Vec3::Zero(), 1.0, false});
+    }
+  }
+  if (o.material) {
+    add_material_elements(o, desc);
+  } else {
+    add_lab_elements(o, desc);
   }
   desc.particles[id(0, 0)].pinned = true;
   desc.particles[id(0, n)].pinned = true;

@@ -1,6 +1,9 @@
 #pragma once
 // The lab's cloth and any n x n grid like it.
+#include <optional>
+
 #include "animkit/cloth/cloth_model.h"
+#include "animkit/cloth/material.h"
 
 namespace animkit {
 
@@ -9,6 +12,8 @@ namespace animkit {
 /// particle to its neighbours at distance 1 and 2 along both grid axes and at distance 1 along
 /// both diagonals; the two corners of the edge i = 0 are pinned. Defaults: the lab's cloth
 /// (11 x 11 particles, spacing 0.2, y = 1.5, mass 1, stiffness 100, damping 0.2, gravity 0.3).
+/// With a `material`, the sheet is physical instead (see material.h): sizes in metres, masses
+/// and stiffnesses from the material, bends instead of the distance-2 springs.
 struct GridClothOptions {
   int cells = 10;       ///< n >= 1: cells per side, n + 1 particles per side
   double size = 2.0;    ///< side length (scene units); spacing = size / cells
@@ -17,8 +22,11 @@ struct GridClothOptions {
   double stiffness = 100.0;
   double damping = 0.2;
   double gravity = 0.3;
+  /// A physical material: replaces mass, stiffness and damping (and the distance-2 springs).
+  std::optional<ClothMaterial> material = std::nullopt;
 
-  /// The first out-of-range option, or nothing. Cells are capped at kMaxGridCells.
+  /// The first out-of-range option, or nothing. Cells are capped at kMaxGridCells; a material
+  /// must give particle masses and stiffnesses inside parameter_ranges.h at this resolution.
   std::optional<Error> validate() const;
 };
 
