@@ -13,6 +13,7 @@
 #include "animkit/cloth/cloth_run.h"
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
+#include "animkit/cloth/material.h"
 #include "animkit/cloth/parameter_ranges.h"
 #include "animkit/core/quote.h"
 #include "animkit/core/validation.h"
@@ -53,8 +54,42 @@ class ProgressLine {
 
 }  // namespace
 
-int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const std::string& video,
-                 const std::function<Result<void>()>& commit) {
+namespace {
+
+std::string material_names() {
+  std::string names;
+  for (const MaterialPreset& preset : material_presets())
+    names += (names.empty() ? "" : ", ") + std::string(preset.name);
+  return names;
+}
+
+// The grid to simulate: the lab's, or a physical sheet of the --material.
+Result<GridClothOptions> grid_of(const ClothArgs& args) {
+  GridClothOptions grid = args.grid;
+  if (args.material.empty()) return grid;
+  const MaterialPreset* preset = find_material(args.material);
+  if (!preset) {
+    return fail("unknown material " + quote_input(args.material) +
+                " (expected one of: " + material_names() + ")");
+  }
+  if (!args.lab_options_given.empty()) {
+    return fail(args.lab_options_given.front() +
+                " sets the lab's per-particle cloth; --material sets masses and stiffnesses "
+                "from the material");
+  }
+  grid.material = preset->material;
+  if (!args.gravity_given) grid.gravity = 9.81;
+  return grid;
+}
+
+}  // namespace
+
+int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
+                 const std::string& video, const std::function<Result<void>()>& commit) {
+  ClothArgs args = args_in;
+  auto grid = grid_of(args);
+  if (!grid) return report_error(grid.error().message);
+  args.grid = *grid;
   if (auto error = args.grid.validate()) return report_error(error->message);
   if (!kTimeStepRange.contains(args.dt)) {
     return report_error(kTimeStepRange.refusal("--dt (seconds)", args.dt));
@@ -131,18 +166,20 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
   }
   progress.done();
 
-  const ClothRunInfo info{std::string(integrator->name),
-                          args.grid.cells,
-                          sim->model().particle_count(),
-                          sim->model().spring_count(),
-                          args.dt,
-                          options.effective_substeps(),
-                          args.grid.mass,
-                          args.grid.stiffness,
-                          args.grid.damping,
-                          args.grid.gravity,
-                          args.tolerance,
-                          divergence};
+  ClothRunInfo info{std::string(integrator->name),
+                    args.grid.cells,
+                    sim->model().particle_count(),
+                    sim->model().spring_count(),
+                    args.dt,
+                    options.effective_substeps(),
+                    args.grid.mass,
+                    args.grid.stiffness,
+                    args.grid.damping,
+                    args.grid.gravity,
+                    args.tolerance,
+                    divergence,
+                    args.material,
+                    args.grid.size};
   if (cache) {
     // A diverged run's results are its metrics (where and how it failed) and no animation:
     // the unfinished cache is dropped with its writer.
@@ -197,6 +234,12 @@ std::function<int()> add_cloth_command(CLI::App& app) {
       "Blender opens (cloth.obj + cloth.pc2 for the Mesh Cache modifier).");
   cloth->add_option("--grid", args->grid.cells, "Cells per side N (N + 1 particles per side)")
       ->capture_default_str();
+  cloth->add_option("--size", args->grid.size, "Side of the square sheet (m with --material)")
+      ->capture_default_str();
+  cloth->add_option("--material", args->material,
+                    "A physical sheet of: " + material_names() +
+                        " (masses and stiffnesses from the material, gravity 9.81; see the "
+                        "README for the values)");
   cloth->add_option("--frames", args->frames, "Steps to simulate")->capture_default_str();
   cloth->add_option("--dt", args->dt, "Seconds per step (the frame's duration)")
       ->capture_default_str();
@@ -223,7 +266,13 @@ std::function<int()> add_cloth_command(CLI::App& app) {
                     "Folder for metrics.json, cloth.obj, cloth.pc2 and final.png (created if "
                     "needed; replaced whole when the run ends, see the README)");
   add_picture_options(*cloth, args->pictures, "final.png");
-  return [args] { return run_cloth(*args); };
+  return [args, cloth] {
+    args->gravity_given = cloth->count("--gravity") > 0;
+    for (const char* option : {"--mass", "--stiffness", "--damping"}) {
+      if (cloth->count(option) > 0) args->lab_options_given.emplace_back(option);
+    }
+    return run_cloth(*args);
+  };
 }
 
 }  // namespace animkit::cli

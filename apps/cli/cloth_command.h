@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
@@ -19,6 +20,11 @@ struct ClothArgs {
   std::string integrator{integrator_entry(SimulationOptions{}.integrator).name};
   int substeps = 0;
   double tolerance = NewtonSettings{}.tolerance;
+  /// A material preset (material.h); empty: the lab's per-particle parameters.
+  std::string material;
+  bool gravity_given = false;  ///< --gravity was on the command line (else 9.81 with a material)
+  /// The lab-parameter options given on the command line (--mass, ...): a material sets them.
+  std::vector<std::string> lab_options_given;
   std::string out;  ///< empty: write no files
   PictureArgs pictures;
 };

@@ -9,6 +9,7 @@
 
 #include "../support/run_command.h"
 #include "../support/temp_files.h"
+#include "animkit/cloth/integrator_registry.h"
 
 namespace {
 
@@ -55,8 +56,25 @@ TEST(ClothCli, WritesMetricsObjAndPointCache) {
   EXPECT_EQ(pc2.size(), 32u + 61u * 121u * 12u);
 }
 
+TEST(ClothCli, AMaterialGivesAPhysicalSheet) {
+  const fs::path out = fresh_dir("cotton");
+  const auto r = run_command(kCli +
+                             " cloth --material cotton --grid 10 --size 1 --frames 5 --no-picture "
+                             "--out " +
+                             out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto m = nlohmann::json::parse(read_file(out / "metrics.json"));
+  EXPECT_EQ(m["options"]["material"], "cotton");
+  EXPECT_EQ(m["options"]["gravity"], 9.81);  // physical gravity unless --gravity says otherwise
+  EXPECT_EQ(m["options"]["size"], 1.0);
+  EXPECT_EQ(m["converged_fraction"], 1.0);
+  // Axis springs and diagonals plus the coupling springs of the bends; no distance-2 springs.
+  EXPECT_EQ(m["springs"], 2 * 10 * 11 + 2 * 10 * 10 + 2 * 9 * 11);
+}
+
 TEST(ClothCli, EveryIntegratorRuns) {
-  for (const char* integrator : {"explicit", "implicit-direct", "implicit-pcg"}) {
+  for (const animkit::IntegratorEntry& entry : animkit::cloth_integrators()) {
+    const std::string integrator(entry.name);
     const auto r = run_command(kCli + " cloth --grid 4 --frames 10 --integrator " + integrator);
     EXPECT_EQ(r.exit_code, 0) << integrator << ": " << r.err;
     EXPECT_NE(r.out.find(integrator), std::string::npos);
@@ -117,6 +135,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadCloth{"--substeps -2", "substeps must be between 1 and 100000"},
         BadCloth{"--tolerance 2", "tolerance must be in (0, 1), got 2"},
         BadCloth{"--integrator verlet", "unknown integrator 'verlet'"},
+        BadCloth{"--material tweed", "unknown material 'tweed' (expected one of: cotton, silk"},
+        BadCloth{"--material cotton --stiffness 10", "--stiffness sets the lab's per-particle"},
+        BadCloth{"--material cotton --grid 500 --size 0.1",
+                 "the material's particle mass at 501 x 501 particles and 0.1 m must be between"},
         BadCloth{"--out /proc/animkit-cannot-write", "cannot create output folder"}),
     [](const auto& param_info) { return "case" + std::to_string(param_info.index); });
 

@@ -18,6 +18,10 @@ struct ClothRunInfo {
   double mass = 0.0, stiffness = 0.0, damping = 0.0, gravity = 0.0, tolerance = 0.0;
   /// Set when the run diverged: the error message (the steps are those before it).
   std::optional<std::string> divergence;
+  /// The material preset of a physical sheet (empty: the lab's per-particle parameters, which
+  /// mass, stiffness and damping then give), and the sheet's side.
+  std::string material;
+  double size = 0.0;
 };
 
 /// {"frames", "particles", "springs", "integrator", "diverged", "ms_per_step": {"median",
