@@ -84,6 +84,8 @@ VertexBlockDescent::VertexBlockDescent(const ClothModel& model, const VbdSetting
   }
   incident_springs_.resize(static_cast<std::size_t>(spring_start_.back()));
   incident_bends_.resize(static_cast<std::size_t>(bend_start_.back()));
+  incident_length_.resize(incident_springs_.size());
+  incident_axial_.resize(incident_springs_.size());
   std::vector<int> fill(spring_start_.begin(), spring_start_.end() - 1);
   for (int s = 0; s < model.spring_count(); ++s) {
     if (model.stiffness[static_cast<std::size_t>(s)] <= 0.0) continue;
@@ -102,26 +104,25 @@ VertexBlockDescent::VertexBlockDescent(const ClothModel& model, const VbdSetting
 
 // g_i(x_i + step) - g_i(x_i): the change of every term of g that involves x_i, in the
 // cancellation-free forms of IncrementalPotential::difference, so it resolves decreases far
-// below the rounding of g itself.
+// below the rounding of g itself. Reuses the spring lengths and dashpot displacements that
+// update_particle() left in incident_length_ and incident_axial_ for this x_i.
 double VertexBlockDescent::local_difference(int i, const Vec3& step) const {
   const Vec3 xi = at(x_, i);
-  const Eigen::VectorXd& y = potential_.predicted();
-  const Eigen::VectorXd& start = potential_.start();
   const std::vector<Vec3>& axes = potential_.damping_axes();
   const double mass = model_.mass[static_cast<std::size_t>(i)];
-  double inertia = mass * step.dot(2.0 * (xi - at(y, i)) + step);
+  double inertia = mass * step.dot(2.0 * (xi - at(potential_.predicted(), i)) + step);
   double elastic = 0.0, damping = 0.0;
   for (int e = spring_start_[static_cast<std::size_t>(i)];
        e < spring_start_[static_cast<std::size_t>(i) + 1]; ++e) {
-    const auto [s, j] = incident_springs_[static_cast<std::size_t>(e)];
+    const auto eu = static_cast<std::size_t>(e);
+    const auto [s, j] = incident_springs_[eu];
     const auto su = static_cast<std::size_t>(s);
     const Vec3 d = xi - at(x_, j);
-    const double sum = d.norm() + (d + step).norm();
+    const double sum = incident_length_[eu] + (d + step).norm();
     const double dl = sum > 0.0 ? step.dot(2.0 * d + step) / sum : 0.0;
     elastic += 0.5 * model_.stiffness[su] * dl * (sum - 2.0 * model_.rest_length[su]);
-    const double q = (d - at(start, i) + at(start, j)).dot(axes[su]);
     const double dq = step.dot(axes[su]);
-    damping += dq * (2.0 * q + dq);
+    damping += dq * (2.0 * incident_axial_[eu] + dq);
   }
   for (int e = bend_start_[static_cast<std::size_t>(i)];
        e < bend_start_[static_cast<std::size_t>(i) + 1]; ++e) {
@@ -140,20 +141,34 @@ void VertexBlockDescent::update_particle(int i, SweepTotals& totals) {
   const Eigen::VectorXd& start = potential_.start();
   const std::vector<Vec3>& axes = potential_.damping_axes();
   const double inertia = model_.mass[static_cast<std::size_t>(i)] * inv_h2_;
-  // The local gradient and Hessian (VBD eq. 8-9): inertia, springs (projected blocks, see
-  // spring_energy.h) with their dashpots, bends (constant c w_i^2 I).
+  // The local gradient and Hessian (VBD eq. 8-9): inertia, springs with their dashpots, bends
+  // (constant c w_i^2 I). Each spring's gradient k (l - L) / l d and projected block
+  // k [(1 - t) u u^T + t I], t = max(1 - L/l, 0), as in spring_energy.h, fused to one sqrt.
   Vec3 gradient = inertia * (xi - at(potential_.predicted(), i));
   Mat3 hessian = Mat3::Identity() * inertia;
   for (int e = spring_start_[static_cast<std::size_t>(i)];
        e < spring_start_[static_cast<std::size_t>(i) + 1]; ++e) {
-    const auto [s, j] = incident_springs_[static_cast<std::size_t>(e)];
+    const auto eu = static_cast<std::size_t>(e);
+    const auto [s, j] = incident_springs_[eu];
     const auto su = static_cast<std::size_t>(s);
     const Vec3 xj = at(x_, j);
     const double k = model_.stiffness[su], rest = model_.rest_length[su];
-    gradient += spring_gradient(xi, xj, k, rest);
-    hessian += spring_hessian_block(xi, xj, k, rest, /*projected=*/true);
+    const Vec3 d = xi - xj;
+    const double length2 = d.squaredNorm();
+    const double length = std::sqrt(length2);
+    incident_length_[eu] = length;
+    if (length2 > 0.0) {
+      const double inverse = 1.0 / length;
+      gradient += (k * (length - rest) * inverse) * d;
+      const double transverse = std::max(1.0 - rest * inverse, 0.0);
+      hessian.noalias() += (k * (1.0 - transverse) * inverse * inverse) * (d * d.transpose());
+      hessian.diagonal().array() += k * transverse;
+    } else {
+      hessian.diagonal().array() += k;  // coincident: spring_hessian_block's k I stand-in
+    }
     const Vec3& u = axes[su];
-    const double q = (xi - at(start, i) - xj + at(start, j)).dot(u);
+    const double q = (d - at(start, i) + at(start, j)).dot(u);
+    incident_axial_[eu] = q;
     gradient += (dashpot_ * q) * u;
     hessian.noalias() += dashpot_ * (u * u.transpose());
   }

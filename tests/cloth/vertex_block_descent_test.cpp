@@ -160,7 +160,7 @@ TEST_P(VbdVariants, ConvergesOnTheLabsClothAndKeepsPinsStill) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Chebyshev, VbdVariants, testing::Values(0.0, 0.9),
+INSTANTIATE_TEST_SUITE_P(Chebyshev, VbdVariants, testing::Values(0.0, VbdSettings{}.chebyshev_rho),
                          [](const auto& param_info) {
                            return param_info.param > 0.0 ? std::string("chebyshev")
                                                          : std::string("plain");

@@ -66,6 +66,10 @@ class VertexBlockDescent final : public ClothIntegrator {
   std::vector<int> spring_start_, bend_start_;
   std::vector<IncidentSpring> incident_springs_;
   std::vector<IncidentBend> incident_bends_;
+  // Per incident spring entry, written by update_particle() for local_difference(): the
+  // spring's length and dashpot displacement at the particle's current x. Each entry belongs
+  // to one particle, so the particles of a colour never write the same one.
+  std::vector<double> incident_length_, incident_axial_;
   double inv_h2_ = 0.0, dashpot_ = 0.0;  // 1/h^2 and c/h for the current substep
   Eigen::VectorXd x_, gradient_, previous_, before_sweep_, chebyshev_step_;
 };
