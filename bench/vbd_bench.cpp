@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kFrame = 1.0 / 60.0;
 constexpr int kWarmUpFrames = 20;  // start timing on a moving, deformed cloth
-constexpr int kTimedSteps = 20;    // steps 21 to 40 of the fall from flat
+constexpr int kTimedSteps = 10;    // steps 21 to 30 of the fall from flat
 
 enum Scene : long { kCotton = 0, kLab = 1, kLab256 = 2 };
 

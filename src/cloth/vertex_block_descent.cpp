@@ -7,6 +7,7 @@
 #include <string>
 
 #include "animkit/cloth/bend_energy.h"
+#include "animkit/cloth/implicit_substep.h"
 #include "animkit/cloth/spring_energy.h"
 #include "animkit/core/validation.h"
 
@@ -253,13 +254,9 @@ void VertexBlockDescent::step(ClothState& state, double h, StepReport& report,
   double gradient_norm = gradient_.norm();
   report.ms_gradient += ms_since(t);
 
-  const double start_norm = gradient_norm;
-  if (report.substeps_done == 0) report.gradient_norm_start = start_norm;
-  ++report.substeps_done;
-  const double stop = std::max(options_.tolerance * start_norm, potential_.gradient_floor());
-  report.gradient_tolerance = std::max(report.gradient_tolerance, stop);
-  const auto reached = [&stop](double norm) { return std::isfinite(norm) && norm <= stop; };
-  bool converged = reached(gradient_norm);
+  const GradientStop test =
+      begin_implicit_substep(potential_, gradient_norm, options_.tolerance, report);
+  bool converged = test.reached(gradient_norm);
   const bool accelerate = options_.chebyshev_rho > 0.0;
   int chebyshev_iteration = 0;
   double omega = 1.0;
@@ -296,7 +293,7 @@ void VertexBlockDescent::step(ClothState& state, double h, StepReport& report,
       potential_.gradient(x_, gradient_);
       gradient_norm = gradient_.norm();
       report.ms_gradient += ms_since(t);
-      converged = reached(gradient_norm);
+      converged = test.reached(gradient_norm);
       checked = true;
     }
     if (options_.record_iterations) {
@@ -312,22 +309,12 @@ void VertexBlockDescent::step(ClothState& state, double h, StepReport& report,
     potential_.gradient(x_, gradient_);
     gradient_norm = gradient_.norm();
     report.ms_gradient += ms_since(t);
-    converged = reached(gradient_norm);
+    converged = test.reached(gradient_norm);
   }
   report.gradient_norm_end = gradient_norm;
   report.converged = report.converged && converged;
 
-  // v_{n+1} = (x_{n+1} - x_n) / h; pinned particles were never updated and stay put.
-  for (int i = 0; i < model_.particle_count(); ++i) {
-    if (model_.pinned[static_cast<std::size_t>(i)]) {
-      x_.segment<3>(3 * i) = state.positions.segment<3>(3 * i);
-      state.velocities.segment<3>(3 * i).setZero();
-    } else {
-      state.velocities.segment<3>(3 * i) =
-          (x_.segment<3>(3 * i) - state.positions.segment<3>(3 * i)) / h;
-    }
-  }
-  state.positions.swap(x_);
+  finish_implicit_substep(model_, x_, h, state);
 }
 
 }  // namespace animkit
