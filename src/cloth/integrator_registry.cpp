@@ -9,6 +9,7 @@
 #include "animkit/cloth/implicit_euler.h"
 #include "animkit/cloth/integrator.h"
 #include "animkit/cloth/parameter_ranges.h"
+#include "animkit/cloth/vertex_block_descent.h"
 #include "animkit/core/validation.h"
 
 namespace animkit {
@@ -28,6 +29,9 @@ const std::array kEntries{
         newton(LinearSolverKind::pcg)},
     IntegratorEntry{"implicit-direct", "implicit Euler, Newton + sparse LDL^T",
                     newton(LinearSolverKind::direct)},
+    IntegratorEntry{"vbd",
+                    "implicit Euler, Vertex Block Descent (coloured per-vertex Newton sweeps)",
+                    VbdSettings{}},
     IntegratorEntry{"explicit", "explicit Euler (the lab's 1000 substeps per step)",
                     ExplicitEulerSettings{}, 1000},
 };
@@ -106,6 +110,9 @@ std::unique_ptr<ClothIntegrator> make_integrator(const ClothModel& model,
     }
     std::unique_ptr<ClothIntegrator> operator()(const NewtonSettings& s) const {
       return std::make_unique<ImplicitEuler>(model, s);
+    }
+    std::unique_ptr<ClothIntegrator> operator()(const VbdSettings& s) const {
+      return std::make_unique<VertexBlockDescent>(model, s);
     }
   };
   return std::visit(Maker{model}, settings);

@@ -31,6 +31,12 @@ class IncrementalPotential {
   /// The predicted positions y, where Newton starts (pinned particles: x_n).
   const Eigen::VectorXd& predicted() const { return y_; }
 
+  /// x_n, the step's start (from prepare()).
+  const Eigen::VectorXd& start() const { return x_start_; }
+  /// The step h and, per spring, its dashpot's unit axis frozen at x_n (zero: no dashpot).
+  double time_step() const { return h_; }
+  const std::vector<Vec3>& damping_axes() const { return damping_axis_; }
+
   /// The gradient norm below which |grad g| is rounding noise that no solver can shrink: every
   /// solver's stopping test is max(tolerance |grad g(y)|, this). The gradient sums the inertia
   /// term M (x - y) / h^2 and spring forces k (l - L) u, each computed from coordinates with a

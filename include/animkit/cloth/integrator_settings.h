@@ -57,9 +57,31 @@ struct NewtonSettings {
   std::optional<Error> validate() const;
 };
 
+/// Vertex Block Descent (Chen, Macklin et al. 2024): coloured Gauss-Seidel sweeps of per-vertex
+/// 3x3 Newton steps on g, each guarded so that g never increases (vertex_block_descent.h).
+struct VbdSettings {
+  /// Stops when |grad g| <= tolerance * |grad g at x = y|, like Newton. (0, 1).
+  double tolerance = 1e-6;
+  int max_iterations = 1000;       ///< sweeps (over all colours) per substep, >= 1
+  bool record_iterations = false;  ///< fill StepReport::iterations
+  /// Sweeps between stopping tests (each costs a full gradient), >= 1. The test also runs
+  /// after the last sweep, and after every sweep when recording.
+  int check_interval = 1;
+  /// Chebyshev acceleration's spectral radius estimate rho (Wang 2015, as VBD section 3.8
+  /// applies it), in [0, 1); 0 turns it off. An accelerated iterate that does not decrease g
+  /// is dropped and the acceleration restarts, so g still decreases every sweep. Near 1 suits
+  /// stiff cloth (slow Gauss-Seidel convergence); on soft cloth VBD stops before it matters.
+  double chebyshev_rho = 0.999;
+  /// Local Armijo constant of each vertex's backtracking, in (0, 1).
+  double gamma = 1e-4;
+  int max_backtracks = 10;  ///< halvings of a vertex's step before it stays put, >= 0
+
+  std::optional<Error> validate() const;
+};
+
 /// Which integrator a simulation uses, with its settings. Adding an integrator adds one
 /// alternative here and one entry in the registry (integrator_registry.h).
-using IntegratorSettings = std::variant<ExplicitEulerSettings, NewtonSettings>;
+using IntegratorSettings = std::variant<ExplicitEulerSettings, NewtonSettings, VbdSettings>;
 
 /// The first invalid setting, or nothing.
 std::optional<Error> validate(const IntegratorSettings& settings);

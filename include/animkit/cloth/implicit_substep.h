@@ -1,0 +1,31 @@
+#pragma once
+// The stages every implicit integrator shares around its own minimization of g: the stopping
+// test (SPEC.md section 4, the same for every solver so their results compare one to one) and
+// the velocity update. Newton, VBD and any later solver call these instead of repeating them.
+#include <Eigen/Core>
+#include <cmath>
+
+#include "animkit/cloth/cloth_model.h"
+#include "animkit/cloth/incremental_potential.h"
+#include "animkit/cloth/step_report.h"
+
+namespace animkit {
+
+/// |grad g(x)| <= max(tolerance |grad g(y)|, the potential's rounding floor).
+struct GradientStop {
+  double stop = 0.0;
+  /// Written so that a NaN or an infinite norm never counts as converged (inf <= inf is true).
+  bool reached(double norm) const { return std::isfinite(norm) && norm <= stop; }
+};
+
+/// Starts a substep's report: |grad g(y)| (`start_norm`) as the step's start on its first
+/// substep, one more substep done, the tolerance reached so far; returns the stopping test.
+GradientStop begin_implicit_substep(const IncrementalPotential& potential, double start_norm,
+                                    double tolerance, StepReport& report);
+
+/// v_{n+1} = (x_{n+1} - x_n) / h, then x_{n+1} into `state` (swapped with `x`). Pinned particles
+/// were never unknowns: they stay at x_n with zero velocity.
+void finish_implicit_substep(const ClothModel& model, Eigen::VectorXd& x, double h,
+                             ClothState& state);
+
+}  // namespace animkit
