@@ -2,25 +2,15 @@
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
 
 #include "animkit/cloth/hessian_pattern.h"
+#include "animkit/cloth/implicit_substep.h"
 #include "animkit/core/validation.h"
 
 namespace animkit {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-}  // namespace
 
 std::optional<Error> NewtonSettings::validate() const {
   if (!std::isfinite(tolerance) || tolerance <= 0.0 || tolerance >= 1.0) {
@@ -98,7 +88,7 @@ bool ImplicitEuler::solve_newton_system(double relative_gradient, IterationRecor
 
 void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
                          const Eigen::VectorXd* external_forces) {
-  const auto substep_start = Clock::now();
+  const auto substep_start = StageClock::now();
   auto t = substep_start;
   potential_.prepare(state, h, external_forces);
   x_ = potential_.predicted();
@@ -107,13 +97,9 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
   report.ms_gradient += ms_since(t);
 
   const double start_norm = gradient_norm;
-  if (report.substeps_done == 0) report.gradient_norm_start = start_norm;
-  ++report.substeps_done;
-  const double stop = std::max(options_.tolerance * start_norm, potential_.gradient_floor());
-  report.gradient_tolerance = std::max(report.gradient_tolerance, stop);
-  // Written so that a NaN or an infinite norm never counts as converged (inf <= inf is true).
-  const auto reached = [&stop](double norm) { return std::isfinite(norm) && norm <= stop; };
-  bool converged = reached(gradient_norm);
+  const GradientStop stop =
+      begin_implicit_substep(potential_, start_norm, options_.tolerance, report);
+  bool converged = stop.reached(gradient_norm);
   for (int k = 0; !converged && std::isfinite(gradient_norm) && k < options_.max_iterations; ++k) {
     IterationRecord record;
     // g itself is needed only for the record: the line search works with differences.
@@ -124,10 +110,10 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
     bool projected = options_.projection == HessianProjection::always;
     double slope = 0.0;
     for (;;) {
-      t = Clock::now();
+      t = StageClock::now();
       potential_.hessian(x_, hessian_, projected);
       report.ms_hessian += ms_since(t);
-      t = Clock::now();
+      t = StageClock::now();
       const bool positive = solve_newton_system(gradient_norm / start_norm, record);
       slope = gradient_.dot(dx_);
       report.ms_linear_solve += ms_since(t);
@@ -145,7 +131,7 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
     // Backtracking line search (SPEC.md): alpha = 1/beta; repeat alpha = beta alpha,
     // x' = x + alpha dx, until g(x') <= g(x) + gamma alpha grad.dx. The difference
     // g(x') - g(x) is evaluated directly (see IncrementalPotential::difference); a NaN rejects.
-    t = Clock::now();
+    t = StageClock::now();
     double alpha = 1.0 / options_.beta;
     double decrease = 0.0;
     bool accepted = false;
@@ -162,12 +148,12 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
     if (!accepted) break;  // no decrease found: keep x (reported as not converged)
 
     x_ += trial_;
-    t = Clock::now();
+    t = StageClock::now();
     potential_.gradient(x_, gradient_);
     gradient_norm = gradient_.norm();
     report.ms_gradient += ms_since(t);
     ++report.newton_iterations;
-    converged = reached(gradient_norm);
+    converged = stop.reached(gradient_norm);
 
     record.gradient_norm = gradient_norm;
     record.ms = ms_since(substep_start);
@@ -180,17 +166,7 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
   report.gradient_norm_end = gradient_norm;
   report.converged = report.converged && converged;
 
-  // v_{n+1} = (x_{n+1} - x_n) / h; pinned particles were never unknowns and stay put.
-  for (int i = 0; i < model_.particle_count(); ++i) {
-    if (model_.pinned[i]) {
-      x_.segment<3>(3 * i) = state.positions.segment<3>(3 * i);
-      state.velocities.segment<3>(3 * i).setZero();
-    } else {
-      state.velocities.segment<3>(3 * i) =
-          (x_.segment<3>(3 * i) - state.positions.segment<3>(3 * i)) / h;
-    }
-  }
-  state.positions.swap(x_);
+  finish_implicit_substep(model_, x_, h, state);
 }
 
 }  // namespace animkit

@@ -2,7 +2,6 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -14,12 +13,6 @@
 namespace animkit {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 Vec3 at(const Eigen::VectorXd& v, int i) {
   return v.segment<3>(3 * i);
@@ -230,7 +223,7 @@ bool VertexBlockDescent::chebyshev(int iteration, double& omega, IterationRecord
   const double rho2 = options_.chebyshev_rho * options_.chebyshev_rho;
   omega = iteration == 0 ? 1.0 : iteration == 1 ? 2.0 / (2.0 - rho2) : 4.0 / (4.0 - rho2 * omega);
   if (iteration == 0) return true;
-  const auto t = Clock::now();
+  const auto t = StageClock::now();
   chebyshev_step_ = (omega - 1.0) * (x_ - previous_);
   const double decrease = potential_.difference(x_, chebyshev_step_);
   report.ms_line_search += ms_since(t);
@@ -242,7 +235,7 @@ bool VertexBlockDescent::chebyshev(int iteration, double& omega, IterationRecord
 
 void VertexBlockDescent::step(ClothState& state, double h, StepReport& report,
                               const Eigen::VectorXd* external_forces) {
-  const auto substep_start = Clock::now();
+  const auto substep_start = StageClock::now();
   auto t = substep_start;
   potential_.prepare(state, h, external_forces);
   inv_h2_ = 1.0 / (h * h);
@@ -266,7 +259,7 @@ void VertexBlockDescent::step(ClothState& state, double h, StepReport& report,
     if (options_.record_iterations) record.objective = potential_.value(x_);
     if (accelerate) before_sweep_ = x_;
 
-    t = Clock::now();
+    t = StageClock::now();
     SweepTotals totals;
     sweep(totals);
     report.ms_linear_solve += ms_since(t);
@@ -289,7 +282,7 @@ void VertexBlockDescent::step(ClothState& state, double h, StepReport& report,
     const bool check = options_.record_iterations || (k + 1) % options_.check_interval == 0 ||
                        k + 1 == options_.max_iterations;
     if (check) {
-      t = Clock::now();
+      t = StageClock::now();
       potential_.gradient(x_, gradient_);
       gradient_norm = gradient_.norm();
       report.ms_gradient += ms_since(t);
@@ -305,7 +298,7 @@ void VertexBlockDescent::step(ClothState& state, double h, StepReport& report,
   }
   if (!checked) {
     // A stall between checks left gradient_norm stale: test the final point.
-    t = Clock::now();
+    t = StageClock::now();
     potential_.gradient(x_, gradient_);
     gradient_norm = gradient_.norm();
     report.ms_gradient += ms_since(t);

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 
+#include "../support/crumpled_cloth.h"
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/integrator_registry.h"
@@ -29,19 +29,9 @@ ClothSimulator simulator(const ClothDesc& desc, const IntegratorSettings& settin
   return std::move(*sim);
 }
 
-// A stiff cloth crumpled at random: every spring keeps its flat rest length, so the first
-// steps start far from equilibrium, with springs compressed and stretched hard.
+// A stiff cloth crumpled at random (see crumpled_cloth.h).
 ClothDesc crumpled_cloth(double stiffness) {
-  ClothDesc desc = make_grid_cloth({.cells = 6, .stiffness = stiffness});
-  for (SpringDesc& s : desc.springs) {
-    s.rest_length = (desc.particles[s.a].position - desc.particles[s.b].position).norm();
-  }
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> u(-0.3, 0.3);
-  for (ParticleDesc& p : desc.particles) {
-    if (!p.pinned) p.position += Vec3(u(rng), u(rng), u(rng));
-  }
-  return desc;
+  return testing_support::crumpled(make_grid_cloth({.cells = 6, .stiffness = stiffness}));
 }
 
 class ImplicitIntegrators : public testing::TestWithParam<LinearSolverKind> {};

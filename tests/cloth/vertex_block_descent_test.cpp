@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
+#include "../support/crumpled_cloth.h"
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/integrator_registry.h"
@@ -44,18 +44,7 @@ ClothDesc bent_damped_cloth(double stiffness, double mass = 1.0) {
   return desc;
 }
 
-// Crumpled at random with the flat rest lengths kept: springs start compressed and stretched.
-ClothDesc crumpled(ClothDesc desc) {
-  for (SpringDesc& s : desc.springs) {
-    s.rest_length = (desc.particles[s.a].position - desc.particles[s.b].position).norm();
-  }
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> u(-0.3, 0.3);
-  for (ParticleDesc& p : desc.particles) {
-    if (!p.pinned) p.position += Vec3(u(rng), u(rng), u(rng));
-  }
-  return desc;
-}
+using testing_support::crumpled;
 
 class VbdVariants : public testing::TestWithParam<double> {};  // the Chebyshev rho
 

@@ -3,6 +3,7 @@
 // test (SPEC.md section 4, the same for every solver so their results compare one to one) and
 // the velocity update. Newton, VBD and any later solver call these instead of repeating them.
 #include <Eigen/Core>
+#include <chrono>
 #include <cmath>
 
 #include "animkit/cloth/cloth_model.h"
@@ -10,6 +11,13 @@
 #include "animkit/cloth/step_report.h"
 
 namespace animkit {
+
+/// The clock the stages are timed with (StepReport's ms fields).
+using StageClock = std::chrono::steady_clock;
+/// Milliseconds since `start`.
+inline double ms_since(StageClock::time_point start) {
+  return std::chrono::duration<double, std::milli>(StageClock::now() - start).count();
+}
 
 /// |grad g(x)| <= max(tolerance |grad g(y)|, the potential's rounding floor).
 struct GradientStop {
