@@ -8,6 +8,7 @@
 #include "animkit/cloth/explicit_euler.h"
 #include "animkit/cloth/implicit_euler.h"
 #include "animkit/cloth/integrator.h"
+#include "animkit/cloth/local_global.h"
 #include "animkit/cloth/parameter_ranges.h"
 #include "animkit/core/validation.h"
 
@@ -28,6 +29,9 @@ const std::array kEntries{
         newton(LinearSolverKind::pcg)},
     IntegratorEntry{"implicit-direct", "implicit Euler, Newton + sparse LDL^T",
                     newton(LinearSolverKind::direct)},
+    IntegratorEntry{"local-global",
+                    "implicit Euler, local/global (Liu et al. 2013) + Chebyshev (Wang 2015)",
+                    LocalGlobalSettings{}},
     IntegratorEntry{"explicit", "explicit Euler (the lab's 1000 substeps per step)",
                     ExplicitEulerSettings{}, 1000},
 };
@@ -106,6 +110,9 @@ std::unique_ptr<ClothIntegrator> make_integrator(const ClothModel& model,
     }
     std::unique_ptr<ClothIntegrator> operator()(const NewtonSettings& s) const {
       return std::make_unique<ImplicitEuler>(model, s);
+    }
+    std::unique_ptr<ClothIntegrator> operator()(const LocalGlobalSettings& s) const {
+      return std::make_unique<LocalGlobal>(model, s);
     }
   };
   return std::visit(Maker{model}, settings);
