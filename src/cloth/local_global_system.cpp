@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "animkit/cloth/bend_energy.h"
+#include "animkit/cloth/supernodal_factor.h"
 
 namespace animkit {
 
@@ -80,10 +81,11 @@ Sparse permuted_lower(const std::vector<Triplet>& values, const std::vector<Trip
 
 }  // namespace
 
-// The factor is computed on the already permuted matrix (natural ordering), so the solve can
-// run its own triangular sweeps on L with the three coordinates interleaved.
+// The factor is computed on the already permuted matrix (natural ordering), and copied into
+// supernodes for the solves, which carry the three coordinates together.
 struct LocalGlobalSystem::Factor {
   Eigen::SimplicialLLT<Sparse, Eigen::Lower, Eigen::NaturalOrdering<int>> llt;
+  SupernodalFactor supernodal;
 };
 
 LocalGlobalSystem::LocalGlobalSystem(const ClothModel& model)
@@ -124,47 +126,14 @@ bool LocalGlobalSystem::factorize(double h) {
   factor_->llt.factorize(matrix_);
   // P is symmetric positive definite by construction (M / h^2 > 0 on every free particle).
   assert(factor_->llt.info() == Eigen::Success);
+  factor_->supernodal.assign(factor_->llt.matrixL().nestedExpression());
   return true;
 }
 
 void LocalGlobalSystem::solve_in_place(Eigen::VectorXd& rhs) {
   const int n = static_cast<int>(order_.size());
-  double* x = permuted_.data();
   for (int i = 0; i < n; ++i) permuted_.segment<3>(3 * order_[i]) = rhs.segment<3>(3 * i);
-  // L y = r then L^T x = y, each one sweep over L's columns carrying the three coordinates
-  // together: the solve is bound by reading L, so this reads it twice instead of six times.
-  const Sparse& l = factor_->llt.matrixL().nestedExpression();
-  const int* outer = l.outerIndexPtr();
-  const int* inner = l.innerIndexPtr();
-  const double* value = l.valuePtr();
-  for (int j = 0; j < n; ++j) {
-    int k = outer[j];  // the diagonal comes first in each column of L
-    const double d = 1.0 / value[k];
-    const double x0 = x[3 * j] * d, x1 = x[3 * j + 1] * d, x2 = x[3 * j + 2] * d;
-    x[3 * j] = x0;
-    x[3 * j + 1] = x1;
-    x[3 * j + 2] = x2;
-    for (++k; k < outer[j + 1]; ++k) {
-      double* xi = x + 3 * inner[k];
-      xi[0] -= value[k] * x0;
-      xi[1] -= value[k] * x1;
-      xi[2] -= value[k] * x2;
-    }
-  }
-  for (int j = n - 1; j >= 0; --j) {
-    const int first = outer[j];
-    double s0 = x[3 * j], s1 = x[3 * j + 1], s2 = x[3 * j + 2];
-    for (int k = first + 1; k < outer[j + 1]; ++k) {
-      const double* xi = x + 3 * inner[k];
-      s0 -= value[k] * xi[0];
-      s1 -= value[k] * xi[1];
-      s2 -= value[k] * xi[2];
-    }
-    const double d = 1.0 / value[first];
-    x[3 * j] = s0 * d;
-    x[3 * j + 1] = s1 * d;
-    x[3 * j + 2] = s2 * d;
-  }
+  factor_->supernodal.solve(permuted_.data());
   for (int i = 0; i < n; ++i) rhs.segment<3>(3 * i) = permuted_.segment<3>(3 * order_[i]);
 }
 
