@@ -111,7 +111,7 @@ void scenes(benchmark::internal::Benchmark* b) {
   for (long scene : {cotton, lab, lab_256}) {
     for (long digits : {2L, 4L}) b->Args({scene, digits});
   }
-  b->ArgNames({"scene", "tol_digits"})->Unit(benchmark::kMillisecond)->Iterations(30);
+  b->ArgNames({"scene", "tol_digits"})->Unit(benchmark::kMillisecond)->Iterations(20);
 }
 
 BENCHMARK(BM_ImplicitPcg)->Apply(scenes);

@@ -1,23 +1,15 @@
 #include "animkit/cloth/local_global.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <string>
 
+#include "animkit/cloth/implicit_substep.h"
 #include "animkit/core/validation.h"
 
 namespace animkit {
 
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-}  // namespace
+using Clock = SubstepClock;
 
 std::optional<Error> LocalGlobalSettings::validate() const {
   if (!std::isfinite(tolerance) || tolerance <= 0.0 || tolerance >= 1.0) {
@@ -62,14 +54,8 @@ void LocalGlobal::step(ClothState& state, double h, StepReport& report,
   double gradient_norm = gradient_.norm();
   report.ms_gradient += ms_since(t);
 
-  const double start_norm = gradient_norm;
-  if (report.substeps_done == 0) report.gradient_norm_start = start_norm;
-  ++report.substeps_done;
-  const double stop = std::max(settings_.tolerance * start_norm, potential_.gradient_floor());
-  report.gradient_tolerance = std::max(report.gradient_tolerance, stop);
-  // Written so that a NaN or an infinite norm never counts as converged (inf <= inf is true).
-  const auto reached = [&stop](double norm) { return std::isfinite(norm) && norm <= stop; };
-  bool converged = reached(gradient_norm);
+  const GradientStop stop = begin_substep(potential_, settings_.tolerance, gradient_norm, report);
+  bool converged = stop.reached(gradient_norm);
 
   // Wang 2015, eq. 12: x_{k+1} = omega_{k+1} (x^_{k+1} - x_{k-1}) + x_{k-1}, x^_{k+1} the plain
   // iterate from x_k, with omega = 1 for the first `delay` iterations, then
@@ -119,7 +105,7 @@ void LocalGlobal::step(ClothState& state, double h, StepReport& report,
     gradient_norm = gradient_.norm();
     report.ms_gradient += ms_since(t);
     ++report.newton_iterations;
-    converged = reached(gradient_norm);
+    converged = stop.reached(gradient_norm);
 
     if (settings_.record_iterations) {
       record.gradient_norm = gradient_norm;
@@ -134,17 +120,7 @@ void LocalGlobal::step(ClothState& state, double h, StepReport& report,
   report.gradient_norm_end = gradient_norm;
   report.converged = report.converged && converged;
 
-  // v_{n+1} = (x_{n+1} - x_n) / h; pinned particles were never unknowns and stay put.
-  for (int i = 0; i < model_.particle_count(); ++i) {
-    if (model_.pinned[i]) {
-      x_.segment<3>(3 * i) = state.positions.segment<3>(3 * i);
-      state.velocities.segment<3>(3 * i).setZero();
-    } else {
-      state.velocities.segment<3>(3 * i) =
-          (x_.segment<3>(3 * i) - state.positions.segment<3>(3 * i)) / h;
-    }
-  }
-  state.positions.swap(x_);
+  end_substep(model_, x_, h, state);
 }
 
 }  // namespace animkit
