@@ -71,7 +71,8 @@ struct LocalGlobalSettings {
   /// Wang's estimate rho of the plain iteration's spectral radius, in (0, 1). Pick it from a
   /// run of the plain method: the ratio |grad g_{k+1}| / |grad g_k| it settles to. Too low
   /// accelerates little; too high (past the true radius) oscillates and, with `monotone`,
-  /// restarts often.
+  /// restarts often. Loose tolerances end before the asymptotic rate matters and do best a
+  /// little below it (the default suits 1e-2 on stiff cloth); tight ones want it close to 1.
   double spectral_radius = 0.99;
   int chebyshev_delay = 10;  ///< plain iterations before the acceleration starts, >= 0
   /// With Chebyshev: reject an accelerated iterate that does not decrease g (or does not
