@@ -8,6 +8,7 @@
 #include "animkit/cloth/explicit_euler.h"
 #include "animkit/cloth/implicit_euler.h"
 #include "animkit/cloth/integrator.h"
+#include "animkit/cloth/local_global.h"
 #include "animkit/cloth/parameter_ranges.h"
 #include "animkit/cloth/vertex_block_descent.h"
 #include "animkit/core/validation.h"
@@ -32,6 +33,9 @@ const std::array kEntries{
     IntegratorEntry{"vbd",
                     "implicit Euler, Vertex Block Descent (coloured per-vertex Newton sweeps)",
                     VbdSettings{}},
+    IntegratorEntry{"local-global",
+                    "implicit Euler, local/global (Liu et al. 2013) + Chebyshev (Wang 2015)",
+                    LocalGlobalSettings{}},
     IntegratorEntry{"explicit", "explicit Euler (the lab's 1000 substeps per step)",
                     ExplicitEulerSettings{}, 1000},
 };
@@ -113,6 +117,9 @@ std::unique_ptr<ClothIntegrator> make_integrator(const ClothModel& model,
     }
     std::unique_ptr<ClothIntegrator> operator()(const VbdSettings& s) const {
       return std::make_unique<VertexBlockDescent>(model, s);
+    }
+    std::unique_ptr<ClothIntegrator> operator()(const LocalGlobalSettings& s) const {
+      return std::make_unique<LocalGlobal>(model, s);
     }
   };
   return std::visit(Maker{model}, settings);

@@ -79,9 +79,37 @@ struct VbdSettings {
   std::optional<Error> validate() const;
 };
 
+/// Implicit Euler by the local/global method (Liu et al. 2013, "Fast simulation of mass-spring
+/// systems"): each iteration is x <- x - P^-1 grad g(x) with a constant matrix P that
+/// majorizes the Hessian of g, factorized once per time step size (local_global.h). Optionally
+/// accelerated by Chebyshev semi-iteration (Wang 2015, "A Chebyshev semi-iterative approach
+/// for accelerating projective and position-based dynamics").
+struct LocalGlobalSettings {
+  /// Stops when |grad g| <= tolerance * |grad g at x = y| (the same test as Newton). (0, 1).
+  double tolerance = 1e-6;
+  int max_iterations = 500;  ///< local/global iterations per substep, >= 1
+  /// Chebyshev acceleration. Off: the plain method, which decreases g at every iteration.
+  bool chebyshev = true;
+  /// Wang's estimate rho of the plain iteration's spectral radius, in (0, 1). Pick it from a
+  /// run of the plain method: the ratio |grad g_{k+1}| / |grad g_k| it settles to. Too low
+  /// accelerates little; too high (past the true radius) oscillates and, with `monotone`,
+  /// restarts often. Loose tolerances end before the asymptotic rate matters and do best a
+  /// little below it (the default suits 1e-2 on stiff cloth); tight ones want it close to 1.
+  double spectral_radius = 0.99;
+  int chebyshev_delay = 10;  ///< plain iterations before the acceleration starts, >= 0
+  /// With Chebyshev: reject an accelerated iterate that does not decrease g (or does not
+  /// descend), take the plain step instead and restart the Chebyshev sequence, so g still
+  /// decreases at every iteration. Costs one evaluation of g's difference per iteration.
+  bool monotone = true;
+  bool record_iterations = false;  ///< fill StepReport::iterations
+
+  std::optional<Error> validate() const;
+};
+
 /// Which integrator a simulation uses, with its settings. Adding an integrator adds one
 /// alternative here and one entry in the registry (integrator_registry.h).
-using IntegratorSettings = std::variant<ExplicitEulerSettings, NewtonSettings, VbdSettings>;
+using IntegratorSettings =
+    std::variant<ExplicitEulerSettings, NewtonSettings, VbdSettings, LocalGlobalSettings>;
 
 /// The first invalid setting, or nothing.
 std::optional<Error> validate(const IntegratorSettings& settings);
