@@ -86,7 +86,8 @@ class GalerkinProduct {
   void compute(const BlockSparseMatrix<F, F>& a, const BlockSparseMatrix<F, C>& p,
                BlockSparseMatrix<C, C>& coarse) {
     for (auto& block : ap_.values) block.setZero();
-    for (const Term& t : ap_terms_) ap_.values[t.out].noalias() += a.values[t.left] * p.values[t.right];
+    for (const Term& t : ap_terms_)
+      ap_.values[t.out].noalias() += a.values[t.left] * p.values[t.right];
     for (auto& block : coarse.values) block.setZero();
     for (const Term& t : coarse_terms_)
       coarse.values[t.out].noalias() += p.values[t.left].transpose() * ap_.values[t.right];

@@ -29,8 +29,7 @@ Matrix3 inverse_block(const Matrix3& block) {
 
 }  // namespace
 
-SmoothedAggregation::SmoothedAggregation(const ClothModel& model,
-                                         const MultigridOptions& options)
+SmoothedAggregation::SmoothedAggregation(const ClothModel& model, const MultigridOptions& options)
     : model_(model), options_(options) {
   const int n = model.particle_count();
   // Finest pattern: a particle's block row holds itself and the free particles it shares a
@@ -70,7 +69,8 @@ SmoothedAggregation::SmoothedAggregation(const ClothModel& model,
     // space on the next level (Vanek et al. 1996, section 3).
     std::vector<Matrix3> gram(static_cast<std::size_t>(aggregates.count), Matrix3::Zero());
     for (int i = 0; i < nodes; ++i) {
-      if (level.aggregate[i] >= 0) gram[level.aggregate[i]] += null_space[i].transpose() * null_space[i];
+      if (level.aggregate[i] >= 0)
+        gram[level.aggregate[i]] += null_space[i].transpose() * null_space[i];
     }
     std::vector<Matrix3> r_factor(gram.size());
     for (std::size_t c = 0; c < gram.size(); ++c) r_factor[c] = gram[c].llt().matrixU();
@@ -78,8 +78,8 @@ SmoothedAggregation::SmoothedAggregation(const ClothModel& model,
     for (int i = 0; i < nodes; ++i) {
       const int c = level.aggregate[i];
       if (c < 0) continue;
-      level.tentative[i] = r_factor[c].triangularView<Eigen::Upper>()
-                               .solve<Eigen::OnTheRight>(null_space[i]);
+      level.tentative[i] =
+          r_factor[c].triangularView<Eigen::Upper>().solve<Eigen::OnTheRight>(null_space[i]);
     }
     // P = (I - omega D^-1 A) T: row i reaches the aggregates of i and of its neighbours.
     std::vector<std::vector<int>> p_rows(static_cast<std::size_t>(nodes));
@@ -222,7 +222,8 @@ void SmoothedAggregation::forward_sweep(Level& level) {
   for (int i = 0; i < a.block_rows; ++i) {
     Eigen::Vector3d sum = level.b.segment<3>(3 * i);
     for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
-      if (k != level.diagonal[i]) sum.noalias() -= a.values[k] * level.x.segment<3>(3 * a.column[k]);
+      if (k != level.diagonal[i])
+        sum.noalias() -= a.values[k] * level.x.segment<3>(3 * a.column[k]);
     }
     level.x.segment<3>(3 * i).noalias() = level.inverse_diagonal[i] * sum;
   }
@@ -233,7 +234,8 @@ void SmoothedAggregation::backward_sweep(Level& level) {
   for (int i = a.block_rows - 1; i >= 0; --i) {
     Eigen::Vector3d sum = level.b.segment<3>(3 * i);
     for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
-      if (k != level.diagonal[i]) sum.noalias() -= a.values[k] * level.x.segment<3>(3 * a.column[k]);
+      if (k != level.diagonal[i])
+        sum.noalias() -= a.values[k] * level.x.segment<3>(3 * a.column[k]);
     }
     level.x.segment<3>(3 * i).noalias() = level.inverse_diagonal[i] * sum;
   }

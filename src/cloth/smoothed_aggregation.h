@@ -48,14 +48,14 @@ class SmoothedAggregation {
 
  private:
   struct Level {
-    Matrix a;                                      // this level's operator (both triangles)
-    std::vector<int> diagonal;                     // position of each row's diagonal block
+    Matrix a;                   // this level's operator (both triangles)
+    std::vector<int> diagonal;  // position of each row's diagonal block
     std::vector<Eigen::Matrix3d> inverse_diagonal;
     // Towards the next level (absent on the coarsest):
-    std::vector<int> aggregate;            // per node, -1 when excluded (pinned)
+    std::vector<int> aggregate;              // per node, -1 when excluded (pinned)
     std::vector<Eigen::Matrix3d> tentative;  // T's block per node
-    Matrix p;                              // smoothed prolongator
-    std::vector<int> smooth_target;        // per block of `a`: P block it smooths into
+    Matrix p;                                // smoothed prolongator
+    std::vector<int> smooth_target;          // per block of `a`: P block it smooths into
     GalerkinProduct<3, 3> galerkin;
     Eigen::VectorXd b, x, r;
   };
