@@ -1,0 +1,52 @@
+#pragma once
+// Preconditioned conjugate gradients on the block Hessian with a smoothed aggregation
+// multigrid V-cycle as preconditioner (Tamstorf, Jones & McCormick, "Smoothed aggregation
+// multigrid for cloth simulation", SIGGRAPH Asia 2015). Block Jacobi only damps the error
+// between neighbouring particles, so its iteration count grows with the stiffness and the
+// resolution; the multigrid hierarchy removes smooth error on coarser and coarser aggregates
+// of particles, which keeps the count about constant. Same interface as BlockJacobiPcg.
+// The hierarchy's structure is built once per model; each solve redoes only its numeric part.
+// No allocation per solve or per iteration; deterministic.
+#include <Eigen/Core>
+#include <memory>
+
+#include "animkit/cloth/block_hessian.h"
+#include "animkit/cloth/block_jacobi_pcg.h"
+
+namespace animkit {
+
+struct MultigridOptions {
+  int coarsest_nodes = 48;   ///< stop coarsening at or below this many nodes (3 unknowns each)
+  int max_levels = 10;       ///< including the finest, >= 1
+  int smoothing_sweeps = 1;  ///< block Gauss-Seidel sweeps before and after the coarse correction
+  /// Smooth the prolongator with each solve's own matrix instead of, once, with the springs'
+  /// isotropic stiffness (see smoothed_aggregation.h).
+  bool resmooth = false;
+};
+
+class SmoothedAggregation;
+
+class MultigridPcg {
+ public:
+  explicit MultigridPcg(const ClothModel& model, const MultigridOptions& options = {});
+  ~MultigridPcg();
+
+  /// Solves A x = b for the SPD matrix in `a`, from x = 0, until |b - A x| <= tolerance |b|,
+  /// `max_iterations`, or a direction of non-positive curvature (see PcgResult).
+  PcgResult solve(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                  double tolerance, int max_iterations);
+
+  /// The hierarchy's levels (1: no coarsening) and the nodes on level l (0: the particles).
+  int level_count() const;
+  int level_nodes(int level) const;
+
+  /// z = B r with the preconditioner set up by the last solve (for tests).
+  void apply_preconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z);
+
+ private:
+  const ClothModel& model_;
+  std::unique_ptr<SmoothedAggregation> multigrid_;
+  Eigen::VectorXd r_, z_, p_, ap_;
+};
+
+}  // namespace animkit

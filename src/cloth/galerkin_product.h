@@ -1,0 +1,106 @@
+#pragma once
+// The Galerkin coarse operator A_c = P^T A P of smoothed aggregation multigrid, for block
+// matrices whose patterns never change. analyze() works out every pattern and lists, once,
+// which block products add into which output block; compute() then replays that list on new
+// values: no searching, no allocation, and always the same order of sums (same bits).
+// A is symmetric, so only the upper block triangle of A_c is summed and the lower one mirrored.
+#include <vector>
+
+#include "block_sparse_matrix.h"
+
+namespace animkit {
+
+template <int F, int C>
+class GalerkinProduct {
+ public:
+  /// Plans P^T A P for these patterns and returns the coarse pattern (values zero).
+  BlockSparseMatrix<C, C> analyze(const BlockSparseMatrix<F, F>& a,
+                                  const BlockSparseMatrix<F, C>& p) {
+    const int fine = a.block_rows, coarse = p.block_cols;
+    std::vector<int> slot(static_cast<std::size_t>(coarse), -1);
+    // A P, row by row: the union of P's rows over A's columns.
+    std::vector<std::vector<int>> rows(static_cast<std::size_t>(fine));
+    for (int i = 0; i < fine; ++i) {
+      for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
+        const int j = a.column[k];
+        for (int q = p.row_start[j]; q < p.row_start[j + 1]; ++q) {
+          if (slot[p.column[q]] < 0) {
+            slot[p.column[q]] = 0;
+            rows[i].push_back(p.column[q]);
+          }
+        }
+      }
+      std::sort(rows[i].begin(), rows[i].end());
+      for (int c : rows[i]) slot[c] = -1;
+    }
+    ap_ = block_pattern<F, C>(rows, coarse);
+    ap_terms_.clear();
+    for (int i = 0; i < fine; ++i) {
+      for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
+        const int j = a.column[k];
+        for (int q = p.row_start[j]; q < p.row_start[j + 1]; ++q)
+          ap_terms_.push_back({ap_.find(i, p.column[q]), k, q});
+      }
+    }
+    // P^T (A P): coarse row c gathers the rows of A P of the fine nodes that P maps onto c.
+    std::vector<std::vector<int>> fine_of(static_cast<std::size_t>(coarse));  // P blocks by column
+    for (int i = 0; i < fine; ++i) {
+      for (int q = p.row_start[i]; q < p.row_start[i + 1]; ++q) fine_of[p.column[q]].push_back(q);
+    }
+    std::vector<int> row_of_block(static_cast<std::size_t>(p.block_count()));
+    for (int i = 0; i < fine; ++i) {
+      for (int q = p.row_start[i]; q < p.row_start[i + 1]; ++q) row_of_block[q] = i;
+    }
+    std::vector<std::vector<int>> coarse_rows(static_cast<std::size_t>(coarse));
+    for (int c = 0; c < coarse; ++c) {
+      for (int q : fine_of[c]) {
+        const int i = row_of_block[q];
+        for (int t = ap_.row_start[i]; t < ap_.row_start[i + 1]; ++t) {
+          if (slot[ap_.column[t]] < 0) {
+            slot[ap_.column[t]] = 0;
+            coarse_rows[c].push_back(ap_.column[t]);
+          }
+        }
+      }
+      std::sort(coarse_rows[c].begin(), coarse_rows[c].end());
+      for (int d : coarse_rows[c]) slot[d] = -1;
+    }
+    BlockSparseMatrix<C, C> result = block_pattern<C, C>(coarse_rows, coarse);
+    coarse_terms_.clear();
+    mirror_.clear();
+    for (int c = 0; c < coarse; ++c) {
+      for (int q : fine_of[c]) {
+        const int i = row_of_block[q];
+        for (int t = ap_.row_start[i]; t < ap_.row_start[i + 1]; ++t) {
+          if (ap_.column[t] >= c) coarse_terms_.push_back({result.find(c, ap_.column[t]), q, t});
+        }
+      }
+      for (int t = result.row_start[c]; t < result.row_start[c + 1]; ++t) {
+        if (result.column[t] < c) mirror_.push_back({t, result.find(result.column[t], c)});
+      }
+    }
+    return result;
+  }
+
+  /// Writes P^T A P into `coarse` (the pattern analyze() returned).
+  void compute(const BlockSparseMatrix<F, F>& a, const BlockSparseMatrix<F, C>& p,
+               BlockSparseMatrix<C, C>& coarse) {
+    for (auto& block : ap_.values) block.setZero();
+    for (const Term& t : ap_terms_)
+      ap_.values[t.out].noalias() += a.values[t.left] * p.values[t.right];
+    for (auto& block : coarse.values) block.setZero();
+    for (const Term& t : coarse_terms_)
+      coarse.values[t.out].noalias() += p.values[t.left].transpose() * ap_.values[t.right];
+    for (const auto& [to, from] : mirror_) coarse.values[to] = coarse.values[from].transpose();
+  }
+
+ private:
+  struct Term {
+    int out, left, right;
+  };
+  BlockSparseMatrix<F, C> ap_;
+  std::vector<Term> ap_terms_, coarse_terms_;
+  std::vector<std::pair<int, int>> mirror_;
+};
+
+}  // namespace animkit

@@ -1,0 +1,268 @@
+#include "smoothed_aggregation.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "aggregation.h"
+
+namespace animkit {
+
+namespace {
+
+using Matrix3 = Eigen::Matrix3d;
+
+std::vector<int> diagonal_positions(const BlockSparseMatrix<3, 3>& a) {
+  std::vector<int> positions(static_cast<std::size_t>(a.block_rows));
+  for (int i = 0; i < a.block_rows; ++i) positions[i] = a.find(i, i);
+  return positions;
+}
+
+// The block inverse of a diagonal block, which is SPD for the cloth's matrices (M / h^2 plus
+// PSD spring blocks). A singular block (a node without unknowns) is left alone (identity).
+Matrix3 inverse_block(const Matrix3& block) {
+  Matrix3 inverse;
+  bool invertible = false;
+  block.computeInverseWithCheck(inverse, invertible);
+  return invertible ? inverse : Matrix3::Identity();
+}
+
+}  // namespace
+
+SmoothedAggregation::SmoothedAggregation(const ClothModel& model, const MultigridOptions& options)
+    : model_(model), options_(options) {
+  const int n = model.particle_count();
+  // Finest pattern: a particle's block row holds itself and the free particles it shares a
+  // spring with; pinned rows hold only their (identity) diagonal.
+  std::vector<std::vector<int>> rows(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) rows[i].push_back(i);
+  for (const auto& [a, b] : model.springs) {
+    if (model.pinned[a] || model.pinned[b]) continue;
+    rows[a].push_back(b);
+    rows[b].push_back(a);
+  }
+  for (auto& row : rows) {
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+  }
+  levels_.emplace_back();
+  levels_[0].a = block_pattern<3, 3>(rows, n);
+  spring_blocks_.reserve(model.springs.size());
+  for (const auto& [a, b] : model.springs) {
+    const bool free = !model.pinned[a] && !model.pinned[b];
+    spring_blocks_.push_back(
+        {free ? levels_[0].a.find(a, b) : -1, free ? levels_[0].a.find(b, a) : -1});
+  }
+
+  // Levels: aggregate, build T from the near-null space, then P's pattern and the next level.
+  std::vector<Matrix3> null_space(static_cast<std::size_t>(n), Matrix3::Identity());
+  std::vector<char> excluded(model.pinned.begin(), model.pinned.end());
+  while (static_cast<int>(levels_.size()) < options_.max_levels &&
+         levels_.back().a.block_rows > options_.coarsest_nodes) {
+    Level& level = levels_.back();
+    const int nodes = level.a.block_rows;
+    const Aggregates aggregates = aggregate_graph(level.a.row_start, level.a.column, excluded);
+    if (aggregates.count == 0 || aggregates.count >= nodes) break;  // no coarsening possible
+    level.aggregate = aggregates.of_node;
+    // T restricted to an aggregate is its null-space blocks B_i orthonormalized together:
+    // T_i = B_i R^-1 with R^T R = sum B_i^T B_i (Cholesky QR); R is the aggregate's null
+    // space on the next level (Vanek et al. 1996, section 3).
+    std::vector<Matrix3> gram(static_cast<std::size_t>(aggregates.count), Matrix3::Zero());
+    for (int i = 0; i < nodes; ++i) {
+      if (level.aggregate[i] >= 0)
+        gram[level.aggregate[i]] += null_space[i].transpose() * null_space[i];
+    }
+    std::vector<Matrix3> r_factor(gram.size());
+    for (std::size_t c = 0; c < gram.size(); ++c) r_factor[c] = gram[c].llt().matrixU();
+    level.tentative.assign(static_cast<std::size_t>(nodes), Matrix3::Zero());
+    for (int i = 0; i < nodes; ++i) {
+      const int c = level.aggregate[i];
+      if (c < 0) continue;
+      level.tentative[i] =
+          r_factor[c].triangularView<Eigen::Upper>().solve<Eigen::OnTheRight>(null_space[i]);
+    }
+    // P = (I - omega D^-1 A) T: row i reaches the aggregates of i and of its neighbours.
+    std::vector<std::vector<int>> p_rows(static_cast<std::size_t>(nodes));
+    for (int i = 0; i < nodes; ++i) {
+      if (level.aggregate[i] < 0) continue;
+      for (int k = level.a.row_start[i]; k < level.a.row_start[i + 1]; ++k) {
+        const int c = level.aggregate[level.a.column[k]];
+        if (c >= 0) p_rows[i].push_back(c);
+      }
+      std::sort(p_rows[i].begin(), p_rows[i].end());
+      p_rows[i].erase(std::unique(p_rows[i].begin(), p_rows[i].end()), p_rows[i].end());
+    }
+    level.p = block_pattern<3, 3>(p_rows, aggregates.count);
+    level.smooth_target.assign(level.a.column.size(), -1);
+    for (int i = 0; i < nodes; ++i) {
+      if (level.aggregate[i] < 0) continue;
+      for (int k = level.a.row_start[i]; k < level.a.row_start[i + 1]; ++k) {
+        const int c = level.aggregate[level.a.column[k]];
+        if (c >= 0) level.smooth_target[k] = level.p.find(i, c);
+      }
+    }
+    Level next;
+    next.a = level.galerkin.analyze(level.a, level.p);
+    levels_.push_back(std::move(next));
+    null_space = std::move(r_factor);
+    excluded.assign(static_cast<std::size_t>(aggregates.count), 0);
+  }
+  for (Level& level : levels_) {
+    level.diagonal = diagonal_positions(level.a);
+    level.inverse_diagonal.resize(static_cast<std::size_t>(level.a.block_rows));
+    const auto size = 3 * static_cast<Eigen::Index>(level.a.block_rows);
+    level.b.setZero(size);
+    level.x.setZero(size);
+    level.r.setZero(size);
+  }
+  const auto coarse_size = 3 * static_cast<Eigen::Index>(levels_.back().a.block_rows);
+  coarsest_dense_.setZero(coarse_size, coarse_size);
+  coarsest_.compute(Eigen::MatrixXd::Identity(coarse_size, coarse_size));
+
+  if (!options_.resmooth) {
+    // P for good, from the model's springs alone.
+    fill_laplacian();
+    for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
+      prepare_smoother(levels_[l]);
+      smooth_prolongator(levels_[l]);
+      levels_[l].galerkin.compute(levels_[l].a, levels_[l].p, levels_[l + 1].a);
+    }
+  }
+}
+
+void SmoothedAggregation::fill_laplacian() {
+  // sum over springs of k (e_a - e_b)(e_a - e_b)^T (x) I: the isotropic stiffness of the
+  // springs, what the cloth's matrix tends to once springs dominate the inertia.
+  Matrix& a = levels_[0].a;
+  for (auto& block : a.values) block.setZero();
+  for (std::size_t s = 0; s < model_.springs.size(); ++s) {
+    const auto [i, j] = model_.springs[s];
+    const Matrix3 k = model_.stiffness[s] * Matrix3::Identity();
+    if (!model_.pinned[i]) a.values[levels_[0].diagonal[i]] += k;
+    if (!model_.pinned[j]) a.values[levels_[0].diagonal[j]] += k;
+    if (spring_blocks_[s][0] >= 0) {
+      a.values[spring_blocks_[s][0]] -= k;
+      a.values[spring_blocks_[s][1]] -= k;
+    }
+  }
+  for (int i = 0; i < a.block_rows; ++i) {
+    Matrix3& d = a.values[levels_[0].diagonal[i]];
+    if (model_.pinned[i] || d(0, 0) == 0.0) d = Matrix3::Identity();
+  }
+}
+
+void SmoothedAggregation::fill_finest(const BlockHessian& hessian) {
+  Matrix& a = levels_[0].a;
+  for (auto& block : a.values) block.setZero();
+  for (int i = 0; i < a.block_rows; ++i) a.values[levels_[0].diagonal[i]] = hessian.diagonal[i];
+  for (std::size_t s = 0; s < spring_blocks_.size(); ++s) {
+    if (spring_blocks_[s][0] < 0) continue;
+    a.values[spring_blocks_[s][0]] -= hessian.coupling[s];
+    a.values[spring_blocks_[s][1]] -= hessian.coupling[s];
+  }
+}
+
+void SmoothedAggregation::prepare_smoother(Level& level) {
+  for (int i = 0; i < level.a.block_rows; ++i)
+    level.inverse_diagonal[i] = inverse_block(level.a.values[level.diagonal[i]]);
+}
+
+void SmoothedAggregation::smooth_prolongator(Level& level) {
+  // omega = 4 / (3 rho(D^-1 A)) (Vanek et al. 1996), rho from a few power iterations started
+  // from a fixed vector, so the result is reproducible.
+  Eigen::VectorXd& v = level.x;
+  Eigen::VectorXd& w = level.r;
+  for (Eigen::Index k = 0; k < v.size(); ++k) v[k] = 1.0 + 0.25 * static_cast<double>(k % 7);
+  double rho = 1.0;
+  for (int it = 0; it < 12; ++it) {
+    v /= v.norm();
+    level.a.multiply(v, w);
+    for (int i = 0; i < level.a.block_rows; ++i)
+      v.segment<3>(3 * i) = level.inverse_diagonal[i] * w.segment<3>(3 * i);
+    rho = v.norm();
+  }
+  const double omega = 4.0 / (3.0 * rho);
+  for (auto& block : level.p.values) block.setZero();
+  for (int i = 0; i < level.a.block_rows; ++i) {
+    if (level.aggregate[i] < 0) continue;
+    level.p.values[level.p.find(i, level.aggregate[i])] += level.tentative[i];
+    const Matrix3 scaled = omega * level.inverse_diagonal[i];
+    for (int k = level.a.row_start[i]; k < level.a.row_start[i + 1]; ++k) {
+      if (level.smooth_target[k] < 0) continue;
+      level.p.values[level.smooth_target[k]].noalias() -=
+          scaled * (level.a.values[k] * level.tentative[level.a.column[k]]);
+    }
+  }
+}
+
+bool SmoothedAggregation::factorize_coarsest() {
+  const Level& level = levels_.back();
+  coarsest_dense_.setZero();
+  for (int i = 0; i < level.a.block_rows; ++i) {
+    for (int k = level.a.row_start[i]; k < level.a.row_start[i + 1]; ++k)
+      coarsest_dense_.block<3, 3>(3 * i, 3 * level.a.column[k]) = level.a.values[k];
+  }
+  coarsest_.compute(coarsest_dense_);
+  return coarsest_.info() == Eigen::Success;
+}
+
+bool SmoothedAggregation::update(const BlockHessian& hessian) {
+  fill_finest(hessian);
+  for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
+    prepare_smoother(levels_[l]);
+    if (options_.resmooth) smooth_prolongator(levels_[l]);
+    levels_[l].galerkin.compute(levels_[l].a, levels_[l].p, levels_[l + 1].a);
+  }
+  prepare_smoother(levels_.back());
+  return factorize_coarsest();
+}
+
+void SmoothedAggregation::forward_sweep(Level& level) {
+  const Matrix& a = level.a;
+  for (int i = 0; i < a.block_rows; ++i) {
+    Eigen::Vector3d sum = level.b.segment<3>(3 * i);
+    for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
+      if (k != level.diagonal[i])
+        sum.noalias() -= a.values[k] * level.x.segment<3>(3 * a.column[k]);
+    }
+    level.x.segment<3>(3 * i).noalias() = level.inverse_diagonal[i] * sum;
+  }
+}
+
+void SmoothedAggregation::backward_sweep(Level& level) {
+  const Matrix& a = level.a;
+  for (int i = a.block_rows - 1; i >= 0; --i) {
+    Eigen::Vector3d sum = level.b.segment<3>(3 * i);
+    for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
+      if (k != level.diagonal[i])
+        sum.noalias() -= a.values[k] * level.x.segment<3>(3 * a.column[k]);
+    }
+    level.x.segment<3>(3 * i).noalias() = level.inverse_diagonal[i] * sum;
+  }
+}
+
+void SmoothedAggregation::cycle(std::size_t l) {
+  Level& level = levels_[l];
+  if (l + 1 == levels_.size()) {
+    level.x = level.b;
+    coarsest_.solveInPlace(level.x);
+    return;
+  }
+  level.x.setZero();
+  for (int s = 0; s < options_.smoothing_sweeps; ++s) forward_sweep(level);
+  level.a.multiply(level.x, level.r);
+  level.r = level.b - level.r;
+  Level& next = levels_[l + 1];
+  level.p.multiply_transpose(level.r, next.b);
+  cycle(l + 1);
+  level.p.multiply_add(next.x, level.x);
+  for (int s = 0; s < options_.smoothing_sweeps; ++s) backward_sweep(level);
+}
+
+void SmoothedAggregation::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+  levels_[0].b = r;
+  cycle(0);
+  z = levels_[0].x;
+}
+
+}  // namespace animkit

@@ -1,0 +1,81 @@
+#pragma once
+// Smoothed aggregation multigrid on 3x3 blocks as a preconditioner for the implicit step's
+// Hessian (Tamstorf, Jones & McCormick, "Smoothed aggregation multigrid for cloth
+// simulation", SIGGRAPH Asia 2015; after Vanek, Mandel & Brezina 1996).
+//
+// Structure, once per model: the finest level's pattern comes from the spring graph, nodes
+// are aggregated (aggregation.h), the tentative prolongator T maps each aggregate's 3 coarse
+// unknowns to its particles (the near-null space: the three translations, orthonormalized per
+// aggregate), P = (I - omega D^-1 A) T smooths it, and P^T A P gives the next level, down to a
+// level small enough for a dense Cholesky factorization. Smoothing P with the matrix of the
+// model's springs (k I per spring, see laplacian()) at construction makes P, every pattern and
+// every Galerkin plan fixed per model: a solve only copies the Hessian in, recomputes the
+// Galerkin products and factorizes the coarsest level. `resmooth` instead smooths P with each
+// solve's own matrix (anisotropic spring blocks), at the cost of a power iteration and the
+// smoothing per level.
+//
+// One application is a V-cycle with a forward block Gauss-Seidel sweep before the coarse
+// correction and a backward one after it: the cycle is then a symmetric positive definite
+// operator, as CG needs.
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <vector>
+
+#include "animkit/cloth/block_hessian.h"
+#include "animkit/cloth/cloth_model.h"
+#include "animkit/cloth/multigrid_pcg.h"
+#include "block_sparse_matrix.h"
+#include "galerkin_product.h"
+
+namespace animkit {
+
+class SmoothedAggregation {
+ public:
+  using Matrix = BlockSparseMatrix<3, 3>;
+
+  SmoothedAggregation(const ClothModel& model, const MultigridOptions& options = {});
+
+  /// Numeric setup for the matrix `a` (the model's, see BlockHessian): Galerkin products,
+  /// smoother blocks, coarsest factorization. Allocates nothing. False when the coarsest
+  /// level is not positive definite (then `a` is not: P has full column rank).
+  bool update(const BlockHessian& a);
+  /// z = B r, one V-cycle; B approximates A^-1 and is symmetric positive definite.
+  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z);
+
+  int level_count() const { return static_cast<int>(levels_.size()); }
+  /// Nodes (3 unknowns each) on level l (0: the particles).
+  int level_nodes(int l) const { return levels_[l].a.block_rows; }
+
+ private:
+  struct Level {
+    Matrix a;                   // this level's operator (both triangles)
+    std::vector<int> diagonal;  // position of each row's diagonal block
+    std::vector<Eigen::Matrix3d> inverse_diagonal;
+    // Towards the next level (absent on the coarsest):
+    std::vector<int> aggregate;              // per node, -1 when excluded (pinned)
+    std::vector<Eigen::Matrix3d> tentative;  // T's block per node
+    Matrix p;                                // smoothed prolongator
+    std::vector<int> smooth_target;          // per block of `a`: P block it smooths into
+    GalerkinProduct<3, 3> galerkin;
+    Eigen::VectorXd b, x, r;
+  };
+
+  void fill_finest(const BlockHessian& a);
+  void fill_laplacian();
+  void prepare_smoother(Level& level);
+  void smooth_prolongator(Level& level);
+  bool factorize_coarsest();
+  void forward_sweep(Level& level);
+  void backward_sweep(Level& level);
+  void cycle(std::size_t l);
+
+  const ClothModel& model_;
+  MultigridOptions options_;
+  std::vector<Level> levels_;
+  std::vector<std::array<int, 2>> spring_blocks_;  // per spring: positions of (a,b), (b,a)
+  Eigen::MatrixXd coarsest_dense_;
+  Eigen::LLT<Eigen::MatrixXd> coarsest_;
+  Eigen::VectorXd power_x_, power_y_;  // power iteration workspace (finest size)
+};
+
+}  // namespace animkit
