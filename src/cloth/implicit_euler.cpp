@@ -58,6 +58,9 @@ ImplicitEuler::ImplicitEuler(const ClothModel& model, const NewtonSettings& opti
     direct_->solution.resize(3 * model.particle_count());
     direct_->ldlt.analyzePattern(direct_->pattern.matrix);  // once: the pattern never changes
   }
+  // The hierarchy's aggregates are built once per model; each solve redoes its numbers.
+  if (options_.linear_solver == LinearSolverKind::multigrid)
+    multigrid_ = std::make_unique<MultigridPcg>(model);
 }
 
 ImplicitEuler::~ImplicitEuler() = default;
@@ -81,7 +84,9 @@ bool ImplicitEuler::solve_newton_system(double relative_gradient, IterationRecor
   // sqrt-forcing, it saves a whole Newton iteration (Hessian, gradient, line search) per step
   // for a few extra CG iterations, which are cheaper: 2 Newton iterations per step instead of 3.
   const double forcing = 0.01 * std::clamp(relative_gradient, 1e-3, 0.5);
-  const PcgResult pcg = pcg_.solve(hessian_, rhs_, dx_, forcing, 3 * model_.particle_count());
+  const int max_cg = 3 * model_.particle_count();
+  const PcgResult pcg = multigrid_ ? multigrid_->solve(hessian_, rhs_, dx_, forcing, max_cg)
+                                   : pcg_.solve(hessian_, rhs_, dx_, forcing, max_cg);
   record.linear_iterations += pcg.iterations;
   return !pcg.indefinite;
 }

@@ -204,7 +204,8 @@ TEST_P(ImplicitIntegrators, TheLabsClothHangsSymmetrically) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothLinearSolvers, ImplicitIntegrators,
-                         testing::Values(LinearSolverKind::direct, LinearSolverKind::pcg),
+                         testing::Values(LinearSolverKind::direct, LinearSolverKind::pcg,
+                                         LinearSolverKind::multigrid),
                          [](const auto& param_info) {
                            std::string name(integrator_entry(newton(param_info.param)).name);
                            std::replace(name.begin(), name.end(), '-', '_');

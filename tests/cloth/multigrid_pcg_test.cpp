@@ -1,3 +1,4 @@
+#include "animkit/cloth/block_jacobi_pcg.h"
 #include "animkit/cloth/multigrid_pcg.h"
 
 #include <gtest/gtest.h>

@@ -12,6 +12,7 @@
 #include "animkit/cloth/incremental_potential.h"
 #include "animkit/cloth/integrator.h"
 #include "animkit/cloth/integrator_settings.h"
+#include "animkit/cloth/multigrid_pcg.h"
 #include "animkit/cloth/step_report.h"
 #include "animkit/core/result.h"
 
@@ -41,7 +42,8 @@ class ImplicitEuler final : public ClothIntegrator {
   IncrementalPotential potential_;
   BlockHessian hessian_;
   BlockJacobiPcg pcg_;
-  std::unique_ptr<DirectSolver> direct_;
+  std::unique_ptr<MultigridPcg> multigrid_;  // only with LinearSolverKind::multigrid
+  std::unique_ptr<DirectSolver> direct_;     // only with LinearSolverKind::direct
   Eigen::VectorXd x_, gradient_, dx_, trial_, rhs_;
 };
 

@@ -11,7 +11,7 @@
 #include <memory>
 
 #include "animkit/cloth/block_hessian.h"
-#include "animkit/cloth/block_jacobi_pcg.h"
+#include "animkit/cloth/preconditioned_cg.h"
 
 namespace animkit {
 
@@ -46,7 +46,7 @@ class MultigridPcg {
  private:
   const ClothModel& model_;
   std::unique_ptr<SmoothedAggregation> multigrid_;
-  Eigen::VectorXd r_, z_, p_, ap_;
+  CgWorkspace workspace_;
 };
 
 }  // namespace animkit
