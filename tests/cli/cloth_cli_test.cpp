@@ -81,6 +81,23 @@ TEST(ClothCli, EveryIntegratorRuns) {
   }
 }
 
+TEST(ClothCli, AutoPicksAnIntegratorByTryingThem) {
+  const auto r = run_command(kCli + " cloth --grid 6 --frames 5 --integrator auto");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Every implicit integrator was tried, and the run used the one it chose.
+  for (const animkit::IntegratorEntry& entry : animkit::cloth_integrators()) {
+    if (!animkit::tolerance_of(entry.defaults)) continue;
+    EXPECT_NE(r.out.find(std::string(entry.name).append(" ")), std::string::npos) << r.out;
+  }
+  const std::size_t chose = r.out.find("chose ");
+  ASSERT_NE(chose, std::string::npos) << r.out;
+  std::string chosen = r.out.substr(chose + 6);
+  chosen.resize(chosen.find('\n'));
+  EXPECT_NE(animkit::find_integrator(chosen), nullptr) << chosen;
+  // The summary row starts with the integrator's name.
+  EXPECT_NE(r.out.find(std::string(1, '\n').append(chosen)), std::string::npos) << r.out;
+}
+
 TEST(ClothCli, DivergedRunReportsAndWritesNoAnimation) {
   const fs::path out = fresh_dir("diverged");
   const auto r = run_command(kCli +

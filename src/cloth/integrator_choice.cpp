@@ -1,0 +1,71 @@
+#include "animkit/cloth/integrator_choice.h"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+#include <tuple>
+
+#include "animkit/cloth/cloth_simulator.h"
+#include "animkit/cloth/integrator_registry.h"
+#include "animkit/cloth/parameter_ranges.h"
+
+namespace animkit {
+
+namespace {
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+}  // namespace
+
+Result<IntegratorChoice> choose_integrator(const ClothDesc& scene, double dt, double tolerance,
+                                           int trial_steps) {
+  if (trial_steps < 1)
+    return fail("trial steps must be at least 1, got " + std::to_string(trial_steps));
+  if (!kTimeStepRange.contains(dt)) return fail(kTimeStepRange.refusal("time step", dt));
+  IntegratorChoice choice;
+  double best_total = std::numeric_limits<double>::infinity();  // of a converged candidate
+  std::tuple<int, double> best_rank{1, 0.0};  // (not converged, ms per step): lower wins
+  const IntegratorEntry* best = nullptr;
+  for (const IntegratorEntry& entry : cloth_integrators()) {
+    if (!tolerance_of(entry.defaults)) continue;  // explicit Euler
+    SimulationOptions options{entry.defaults, 0};
+    set_tolerance(options.integrator, tolerance);
+    auto sim = ClothSimulator::create(scene, options);
+    if (!sim) return fail(sim.error().message);  // the scene or the tolerance is invalid
+
+    IntegratorTrial trial{.name = entry.name, .converged = true};
+    std::vector<double> ms;
+    double total = 0.0;
+    for (int step = 0; step < trial_steps && total <= best_total; ++step) {
+      auto report = sim->step(dt);
+      if (!report) {  // diverged: the candidate is out
+        trial.diverged = true;
+        break;
+      }
+      ms.push_back(report->ms);
+      total += report->ms;
+      trial.converged = trial.converged && report->converged;
+    }
+    trial.steps = static_cast<int>(ms.size());
+    if (!ms.empty()) trial.ms_per_step = median(ms);
+    choice.trials.push_back(trial);
+    // Only a full trial competes; a candidate stopped early was already slower than the best.
+    if (trial.diverged || trial.steps < trial_steps) continue;
+    const std::tuple<int, double> rank{trial.converged ? 0 : 1, trial.ms_per_step};
+    if (!best || rank < best_rank) {
+      best = &entry;
+      best_rank = rank;
+    }
+    if (trial.converged) best_total = std::min(best_total, total);
+  }
+  if (!best) return fail("every integrator diverged on this scene's first steps");
+  choice.settings = best->defaults;
+  set_tolerance(choice.settings, tolerance);
+  choice.name = best->name;
+  return choice;
+}
+
+}  // namespace animkit
