@@ -21,6 +21,13 @@ void BlockHessian::multiply(const ClothModel& model, const Eigen::VectorXd& p,
     if (free_a) y.segment<3>(3 * a) += kd;
     if (free_b) y.segment<3>(3 * b) -= kd;
   }
+  for (const HessianBlock& block : extra) {  // both ends free (see IncrementalPotential)
+    y.segment<3>(3 * block.row).noalias() += block.value * p.segment<3>(3 * block.col);
+    if (block.row != block.col) {
+      y.segment<3>(3 * block.col).noalias() +=
+          block.value.transpose() * p.segment<3>(3 * block.row);
+    }
+  }
 }
 
 }  // namespace animkit

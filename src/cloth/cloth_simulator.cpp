@@ -91,6 +91,16 @@ std::optional<std::string> divergence(const ClothState& state) {
 
 }  // namespace
 
+Result<void> ClothSimulator::add_energy_term(std::shared_ptr<EnergyTerm> term) {
+  if (!term) return fail("the energy term is null");
+  if (!impl_->integrator->add_energy_term(term)) {
+    return fail(std::string(integrator_entry(impl_->options.integrator).name) +
+                " cannot take extra energy terms such as " + std::string(term->name()) +
+                "; Newton's integrators (implicit-pcg, implicit-multigrid, implicit-direct) can");
+  }
+  return {};
+}
+
 Result<void> ClothSimulator::set_external_forces(const Eigen::VectorXd& forces) {
   const Eigen::Index size = 3 * static_cast<Eigen::Index>(impl_->model.particle_count());
   if (forces.size() != size) {

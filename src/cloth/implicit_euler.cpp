@@ -70,9 +70,18 @@ ImplicitEuler::ImplicitEuler(const ClothModel& model, const NewtonSettings& opti
 
 ImplicitEuler::~ImplicitEuler() = default;
 
+bool ImplicitEuler::add_energy_term(std::shared_ptr<EnergyTerm> term) {
+  potential_.add_term(std::move(term));
+  return true;
+}
+
 bool ImplicitEuler::solve_newton_system(double relative_gradient, IterationRecord& record) {
   rhs_ = -gradient_;
-  if (direct_) {
+  // The direct solver's pattern is the springs': a term coupling other particles is solved by
+  // CG instead (same Newton direction, same stopping test), its diagonal blocks need not.
+  const bool pattern_holds = std::all_of(hessian_.extra.begin(), hessian_.extra.end(),
+                                         [](const HessianBlock& b) { return b.row == b.col; });
+  if (direct_ && pattern_holds) {
     direct_->pattern.assign(hessian_);
     direct_->ldlt.factorize(direct_->pattern.matrix);
     const std::vector<int>& order = direct_->pattern.order;

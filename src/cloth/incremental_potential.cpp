@@ -55,6 +55,7 @@ void IncrementalPotential::prepare(const ClothState& state, double h,
     // No dashpot on a degenerate spring, nor on a bend's coupling-only spring (stiffness 0).
     damping_axis_[s] = length > 0.0 && model_.stiffness[s] > 0.0 ? Vec3(d / length) : Vec3::Zero();
   }
+  for (const auto& term : terms_) term->prepare(state, h);
 }
 
 double IncrementalPotential::value(const Eigen::VectorXd& x) const {
@@ -74,6 +75,7 @@ double IncrementalPotential::value(const Eigen::VectorXd& x) const {
     const auto [a, b, c] = model_.bends[k];
     elastic += bend_energy(at(x, a), at(x, b), at(x, c), model_.bend_stiffness[k]);
   }
+  for (const auto& term : terms_) elastic += term->value(x);
   return inertia / (2.0 * h_ * h_) + elastic + model_.damping / (2.0 * h_) * damping;
 }
 
@@ -108,6 +110,7 @@ double IncrementalPotential::difference(const Eigen::VectorXd& x,
     const Vec3 de = bend_vector(at(step, a), at(step, b), at(step, c));
     elastic += 0.5 * model_.bend_stiffness[k] * de.dot(2.0 * e + de);
   }
+  for (const auto& term : terms_) elastic += term->difference(x, step);
   return inertia / (2.0 * h_ * h_) + elastic + model_.damping / (2.0 * h_) * damping;
 }
 
@@ -132,6 +135,7 @@ void IncrementalPotential::gradient(const Eigen::VectorXd& x, Eigen::VectorXd& g
                    bend_vector(at(x, particles[0]), at(x, particles[1]), at(x, particles[2]));
     for (int j = 0; j < 3; ++j) gradient.segment<3>(3 * particles[j]) += kBendWeights[j] * e;
   }
+  for (const auto& term : terms_) term->add_gradient(x, gradient);
   for (int i = 0; i < model_.particle_count(); ++i) {
     if (model_.pinned[i]) gradient.segment<3>(3 * i).setZero();
   }
@@ -165,6 +169,24 @@ void IncrementalPotential::hessian(const Eigen::VectorXd& x, BlockHessian& block
       if (!model_.pinned[a]) blocks.diagonal[a].diagonal().array() += coupling;
       if (!model_.pinned[b]) blocks.diagonal[b].diagonal().array() += coupling;
       blocks.coupling[s].diagonal().array() += coupling;
+    }
+  }
+  add_term_hessians(x, blocks, projected);
+}
+
+void IncrementalPotential::add_term_hessians(const Eigen::VectorXd& x, BlockHessian& blocks,
+                                             bool projected) const {
+  blocks.extra.clear();
+  for (const auto& term : terms_) {
+    term_blocks_.clear();
+    term->add_hessian(x, projected, term_blocks_);
+    for (const HessianBlock& block : term_blocks_) {
+      // A pinned particle is not an unknown: its row stays the identity's, and a block that
+      // couples it to a free one would act on its (zero) entries only.
+      if (model_.pinned[block.row] || model_.pinned[block.col]) continue;
+      // `diagonal` is what preconditioners see; the products use `extra`.
+      if (block.row == block.col) blocks.diagonal[block.row] += block.value;
+      blocks.extra.push_back(block);
     }
   }
 }

@@ -54,7 +54,8 @@ void LocalGlobal::step(ClothState& state, double h, StepReport& report,
   double gradient_norm = gradient_.norm();
   report.ms_gradient += ms_since(t);
 
-  const GradientStop stop = begin_implicit_substep(potential_, gradient_norm, settings_.tolerance, report);
+  const GradientStop stop =
+      begin_implicit_substep(potential_, gradient_norm, settings_.tolerance, report);
   bool converged = stop.reached(gradient_norm);
 
   // Wang 2015, eq. 12: x_{k+1} = omega_{k+1} (x^_{k+1} - x_{k-1}) + x_{k-1}, x^_{k+1} the plain

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "animkit/cloth/cloth_model.h"
+#include "animkit/cloth/energy_term.h"
 
 namespace animkit {
 
@@ -16,6 +17,10 @@ struct BlockHessian {
   std::vector<Eigen::Matrix3d> diagonal;  ///< per particle, all terms (identity when pinned)
   std::vector<double> inertia;            ///< per particle: m / h^2 (1 when pinned)
   std::vector<Eigen::Matrix3d> coupling;  ///< per spring: K
+  /// The extra energy terms' blocks between free particles (see energy_term.h); empty without
+  /// terms. Their diagonal blocks are also added into `diagonal`, which is all preconditioners
+  /// see of them; the products, and so CG's answer, include them all.
+  std::vector<HessianBlock> extra;
 
   explicit BlockHessian(const ClothModel& model)
       : diagonal(model.particle_count()),

@@ -1,7 +1,7 @@
 #pragma once
-// Preconditioned conjugate gradients (preconditioned_cg.h) with the inverses of its 3x3 diagonal blocks as preconditioner (one block per
-// particle: each particle's mass and the stiffness of its springs in every direction).
-// Workspace sized once.
+// Preconditioned conjugate gradients (preconditioned_cg.h) with the inverses of its 3x3 diagonal
+// blocks as preconditioner (one block per particle: each particle's mass and the stiffness of its
+// springs in every direction). Workspace sized once.
 #include <Eigen/Core>
 #include <vector>
 

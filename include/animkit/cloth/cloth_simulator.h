@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "animkit/cloth/cloth_model.h"
+#include "animkit/cloth/energy_term.h"
 #include "animkit/cloth/integrator_settings.h"
 #include "animkit/cloth/step_report.h"
 
@@ -40,6 +41,11 @@ class ClothSimulator {
   /// (a non-finite or exploded position or velocity) the step is undone, the state stays as it
   /// was, and the error says which step and particle.
   Result<StepReport> step(double dt);
+
+  /// Adds an energy term to every later step's potential (energy_term.h): contact, attachments,
+  /// force fields. Newton's integrators take any term; VBD and local/global refuse with a
+  /// message (see the README's stiff-cloth section), as does explicit Euler.
+  Result<void> add_energy_term(std::shared_ptr<EnergyTerm> term);
 
   /// Forces (3N, world units, particle-major like the state) added in every later step, held
   /// constant over each step like gravity: e.g. a mouse spring the caller re-evaluates per

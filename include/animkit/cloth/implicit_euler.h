@@ -32,6 +32,8 @@ class ImplicitEuler final : public ClothIntegrator {
   /// `external_forces`: see IncrementalPotential::prepare().
   void step(ClothState& state, double h, StepReport& report,
             const Eigen::VectorXd* external_forces = nullptr) override;
+  /// Newton takes any term: its gradient and Hessian join g's (see energy_term.h).
+  bool add_energy_term(std::shared_ptr<EnergyTerm> term) override;
 
  private:
   struct DirectSolver;

@@ -8,13 +8,16 @@
 // E is the springs' elastic energy. D adds the lab's spring dashpots (force -c ((v_a - v_b).u) u
 // on a) implicitly: with v = (x - x_n) / h and each axis u frozen at x_n,
 //   D(x) = c / (2h) sum_springs ((dx_a - dx_b) . u)^2,   dx = x - x_n,
-// a convex quadratic, so the step stays stable (and dissipative) at any h. Pinned particles are
-// not unknowns: their gradient entries are zero and they stay at x_n.
+// a convex quadratic, so the step stays stable (and dissipative) at any h. Extra energy terms
+// (energy_term.h) add to g, its gradient and Hessian. Pinned particles are not unknowns: their
+// gradient entries are zero and they stay at x_n.
 #include <Eigen/Core>
+#include <memory>
 #include <vector>
 
 #include "animkit/cloth/block_hessian.h"
 #include "animkit/cloth/cloth_model.h"
+#include "animkit/cloth/energy_term.h"
 
 namespace animkit {
 
@@ -22,6 +25,10 @@ class IncrementalPotential {
  public:
   /// Sizes the workspace for `model` (kept by reference: it must outlive this object).
   explicit IncrementalPotential(const ClothModel& model);
+
+  /// Adds an energy term to g (kept and shared: the caller may keep changing its parameters).
+  void add_term(std::shared_ptr<EnergyTerm> term) { terms_.push_back(std::move(term)); }
+  const std::vector<std::shared_ptr<EnergyTerm>>& terms() const { return terms_; }
 
   /// Sets up the step from `state` over time h > 0: y, x_n and the damping axes.
   /// `external_forces` (3N, world units; may be null) act like gravity: constant over the step,
@@ -64,6 +71,10 @@ class IncrementalPotential {
   double gradient_floor_ = 0.0;
   Eigen::VectorXd y_, x_start_;
   std::vector<Vec3> damping_axis_;  // per spring: unit axis at x_n (zero if degenerate)
+  std::vector<std::shared_ptr<EnergyTerm>> terms_;
+  mutable std::vector<HessianBlock> term_blocks_;  // scratch of hessian(), kept for its capacity
+
+  void add_term_hessians(const Eigen::VectorXd& x, BlockHessian& blocks, bool projected) const;
 };
 
 }  // namespace animkit

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "animkit/cloth/cloth_model.h"
+#include "animkit/cloth/energy_term.h"
 #include "animkit/cloth/integrator_settings.h"
 #include "animkit/cloth/step_report.h"
 
@@ -17,6 +18,9 @@ class ClothIntegrator {
   /// like gravity, constant over the substep.
   virtual void step(ClothState& state, double h, StepReport& report,
                     const Eigen::VectorXd* external_forces) = 0;
+  /// Adds an energy term to the potential it minimizes; false if it cannot take one (see
+  /// ClothSimulator::add_energy_term).
+  virtual bool add_energy_term(std::shared_ptr<EnergyTerm> /*term*/) { return false; }
 };
 
 /// The integrator `settings` selects, for `model` (kept by reference: it must outlive the

@@ -1,0 +1,47 @@
+#pragma once
+// An extra energy term of the implicit step's potential g (e.g. the contact barriers of issue
+// 11, an attachment, a user's own force field): g(x) = inertia + springs + bends + dashpots +
+// sum of terms. Newton's integrators take any term (ClothSimulator::add_energy_term); the
+// others say why they cannot (see the README's stiff-cloth section).
+#include <Eigen/Core>
+#include <string_view>
+#include <vector>
+
+#include "animkit/cloth/cloth_model.h"
+
+namespace animkit {
+
+/// One 3x3 block of a term's Hessian, at particles (row, col). A block with row != col stands
+/// for itself and its transpose at (col, row): terms list each off-diagonal pair once.
+struct HessianBlock {
+  int row = 0, col = 0;
+  Eigen::Matrix3d value = Eigen::Matrix3d::Zero();
+};
+
+class EnergyTerm {
+ public:
+  virtual ~EnergyTerm() = default;
+
+  /// Names the term in messages ("floor contact").
+  virtual std::string_view name() const = 0;
+  /// Called at the start of every substep, from x_n over h, before any evaluation (e.g. to
+  /// gather contact pairs or freeze an axis).
+  virtual void prepare(const ClothState& /*state*/, double /*h*/) {}
+  /// E(x).
+  virtual double value(const Eigen::VectorXd& x) const = 0;
+  /// E(x + step) - E(x). The line search compares differences; the default subtracts two
+  /// values (and allocates), which loses small decreases when E is large: override it with a
+  /// cancellation-free form where that matters.
+  virtual double difference(const Eigen::VectorXd& x, const Eigen::VectorXd& step) const {
+    const Eigen::VectorXd moved = x + step;
+    return value(moved) - value(x);
+  }
+  /// gradient += grad E(x) (3N; entries of pinned particles are discarded by the caller).
+  virtual void add_gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const = 0;
+  /// Appends the Hessian of E at x as 3x3 blocks. `projected`: each block set must then be
+  /// positive semidefinite as a whole (Newton's fallback when the exact Hessian is indefinite).
+  virtual void add_hessian(const Eigen::VectorXd& x, bool projected,
+                           std::vector<HessianBlock>& blocks) const = 0;
+};
+
+}  // namespace animkit
