@@ -55,14 +55,14 @@ class ProgressLine {
 
 }  // namespace
 
-namespace {
-
 std::string material_names() {
   std::string names;
   for (const MaterialPreset& preset : material_presets())
     names += (names.empty() ? "" : ", ") + std::string(preset.name);
   return names;
 }
+
+namespace {
 
 // The grid to simulate: the lab's, or a physical sheet of the --material.
 Result<GridClothOptions> grid_of(const ClothArgs& args) {

@@ -39,6 +39,9 @@ int run_cloth(const ClothArgs& args);
 int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const std::string& video,
                  const std::function<Result<void>()>& commit);
 
+/// "cotton, silk, ...": the --material choices, for help and messages.
+std::string material_names();
+
 /// Registers `animkit cloth` on `app`; the returned function runs it after parsing.
 std::function<int()> add_cloth_command(CLI::App& app);
 

@@ -9,6 +9,7 @@
 #include "animkit/io/temporary_files.h"
 #include "cli_errors.h"
 #include "cloth_command.h"
+#include "cloth_study_command.h"
 #include "demo_command.h"
 #include "ik_command.h"
 
@@ -32,6 +33,7 @@ int run(CLI::App& app, int argc, char** argv) {
   app.set_version_flag("--version", "animkit 0.1.0");
   const auto run_ik = animkit::cli::add_ik_command(app);
   const auto run_cloth = animkit::cli::add_cloth_command(app);
+  const auto run_cloth_study = animkit::cli::add_cloth_study_command(app);
   const auto run_demo = animkit::cli::add_demo_command(app);
 
   try {
@@ -48,6 +50,7 @@ int run(CLI::App& app, int argc, char** argv) {
   try {
     if (app.got_subcommand("ik")) return run_ik();
     if (app.got_subcommand("cloth")) return run_cloth();
+    if (app.got_subcommand("cloth-study")) return run_cloth_study();
     return run_demo();
   } catch (const std::exception& e) {  // e.g. out of memory: still one line, never a crash
     return animkit::cli::report_error(e.what());

@@ -210,8 +210,7 @@ Result<Strokes> text_strokes_from_font_data(std::string_view utf8,
       if (bitmap.rows > kMaxGlyphPixels || bitmap.width > kMaxGlyphPixels) {
         return fail("font " + font + ": " + code_point_name(c) + " is " +
                     std::to_string(bitmap.width) + "x" + std::to_string(bitmap.rows) +
-                    " pixels at 128 per em, larger than " + std::to_string(kMaxGlyphEms) +
-                    " ems");
+                    " pixels at 128 per em, larger than " + std::to_string(kMaxGlyphEms) + " ems");
       }
       if (bitmap.rows > 0 && bitmap.width > 0) {
         // The glyph on white paper with a margin, then its skeleton as for any image.
