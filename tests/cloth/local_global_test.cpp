@@ -103,6 +103,28 @@ TEST(LocalGlobal, MonotoneChebyshevDecreasesGAtEveryIterationAndRestarts) {
   EXPECT_GT(restarts, 0) << "the scene never exercised the restart";
 }
 
+TEST(LocalGlobal, DecreasesGAtEveryIterationOnCotton) {
+  // Cotton (k h^2 / m near 200 at 11 x 11, bends, pins) is far stiffer relative to its
+  // inertia than the crumpled cloth above: plain and monotone Chebyshev still never raise g.
+  GridClothOptions cotton{.cells = 10, .size = 1.0, .gravity = 9.81};
+  cotton.material = find_material("cotton")->material;
+  for (bool chebyshev : {false, true}) {
+    SCOPED_TRACE(chebyshev ? "Chebyshev" : "plain");
+    // 200 iterations a step, converged or not: past the plain start into the acceleration,
+    // without the thousands a tight tolerance takes here.
+    LocalGlobalSettings settings = local_global(chebyshev);
+    settings.max_iterations = 200;
+    auto sim = simulator(make_grid_cloth(cotton), settings);
+    int iterations = 0;
+    for (int frame = 0; frame < 3; ++frame) {
+      const auto report = sim.step(kFrame);
+      ASSERT_TRUE(report) << report.error().message;
+      iterations += expect_monotone(*report);
+    }
+    EXPECT_GT(iterations, 100);
+  }
+}
+
 TEST(LocalGlobal, ChebyshevTakesFewerIterations) {
   int plain = 0, accelerated = 0;
   for (bool chebyshev : {false, true}) {
@@ -114,41 +136,6 @@ TEST(LocalGlobal, ChebyshevTakesFewerIterations) {
     }
   }
   EXPECT_LT(2 * accelerated, plain);
-}
-
-// Run to a tight tolerance, local/global reaches converged Newton's state (implicit-direct
-// at 1e-10) to 1e-6 of the distance the cloth moved.
-void expect_same_state_as_newton(const ClothDesc& desc, bool chebyshev, int frames) {
-  NewtonSettings newton;
-  newton.linear_solver = LinearSolverKind::direct;
-  newton.tolerance = 1e-10;
-  auto reference = simulator(desc, newton);
-  auto sim = simulator(desc, local_global(chebyshev, 1e-10));
-  const Eigen::VectorXd start = sim.state().positions;
-  for (int frame = 0; frame < frames; ++frame) {
-    ASSERT_TRUE(reference.step(kFrame));
-    const auto report = sim.step(kFrame);
-    ASSERT_TRUE(report);
-    EXPECT_TRUE(report->converged);
-  }
-  const Eigen::VectorXd& x = reference.state().positions;
-  EXPECT_LE((sim.state().positions - x).norm(), 1e-6 * (x - start).norm());
-  EXPECT_LE((sim.state().velocities - reference.state().velocities).norm(),
-            1e-6 * reference.state().velocities.norm());
-}
-
-TEST(LocalGlobal, ReachesNewtonsStateOnAStiffCloth) {
-  for (bool chebyshev : {false, true}) {
-    SCOPED_TRACE(chebyshev ? "Chebyshev" : "plain");
-    expect_same_state_as_newton(make_grid_cloth({.cells = 6, .stiffness = 1e4}), chebyshev, 5);
-  }
-}
-
-TEST(LocalGlobal, ReachesNewtonsStateWithBendsAndDashpots) {
-  for (bool chebyshev : {false, true}) {
-    SCOPED_TRACE(chebyshev ? "Chebyshev" : "plain");
-    expect_same_state_as_newton(crumpled_cloth(1e4, 0.5), chebyshev, 5);
-  }
 }
 
 TEST(LocalGlobal, PinnedParticlesNeverMove) {

@@ -4,9 +4,12 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "animkit/cloth/cloth_model.h"
 #include "animkit/cloth/grid_cloth.h"
+#include "animkit/core/validation.h"
 
 namespace animkit {
 namespace {
@@ -58,6 +61,42 @@ TEST(Material, BadValuesGetOneClearError) {
   EXPECT_EQ(sheet(500, {.density = 0.01}).validate()->message,
             "the material's particle mass at 501 x 501 particles and 1 m must be between 1e-06 "
             "and 1e+06, got 1e-08");
+}
+
+TEST(Material, EveryFieldRefusesNanInfinityAndNonPositiveValues) {
+  // Each field, each bad value: exactly one error, naming the field and the value, from the
+  // material and through the grid's options (what ClothSimulator's callers validate).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  struct Field {
+    const char* name;  // as the message names it
+    double ClothMaterial::*value;
+    std::vector<double> bad;
+  };
+  const std::vector<Field> fields{
+      {"density", &ClothMaterial::density, {nan, inf, -inf, 0.0, -0.15, 1e-5, 2e3}},
+      {"stretch stiffness", &ClothMaterial::stretch, {nan, inf, -inf, 0.0, -1000.0, 1e10}},
+      {"shear stiffness", &ClothMaterial::shear, {nan, inf, -inf, 0.0, -40.0}},
+      {"bending stiffness", &ClothMaterial::bending, {nan, inf, -inf, -1e-5, 2e3}},
+      {"damping", &ClothMaterial::damping, {nan, inf, -inf, -0.1}},
+  };
+  for (const Field& field : fields) {
+    for (double value : field.bad) {
+      ClothMaterial material = find_material("cotton")->material;
+      material.*field.value = value;
+      const std::string got = "got " + format_number(value);
+      SCOPED_TRACE(std::string(field.name) + " " + got);
+      const auto error = material.validate();
+      ASSERT_TRUE(error);
+      EXPECT_EQ(error->message.rfind("material " + std::string(field.name) + " must be ", 0), 0u)
+          << error->message;
+      EXPECT_EQ(error->message.substr(error->message.size() - got.size()), got);
+      EXPECT_EQ(error->message.find('\n'), std::string::npos);
+      const auto through_grid = sheet(20, material).validate();
+      ASSERT_TRUE(through_grid);
+      EXPECT_EQ(through_grid->message, error->message);
+    }
+  }
 }
 
 TEST(Material, MassAndStiffnessFollowTheArea) {
