@@ -6,25 +6,22 @@ namespace animkit {
 
 void BlockHessian::multiply(const ClothModel& model, const Eigen::VectorXd& p,
                             Eigen::VectorXd& y) const {
-  // A p = (M / h^2) p + sum over springs of [K -K; -K K] (p_a, p_b). Row i gathers, over its
-  // springs s to particles j in spring order, K_s (p_i - p_j): each row is written once, so
-  // rows split over threads with the same bits as one thread.
-  const int n = static_cast<int>(inertia.size());
-  parallel::for_each(n, [&](int i) {
-    const auto row = static_cast<Eigen::Index>(3 * i);
-    Eigen::Vector3d sum = inertia[i] * p.segment<3>(row);
-    // A pinned particle is not an unknown: its row stays the identity's, and its p entries
-    // (zero) are left out of its free neighbours' rows.
-    if (!model.pinned[i]) {
-      const Eigen::Vector3d pi = p.segment<3>(row);
-      for (int e = incidence.spring_start[i]; e < incidence.spring_start[i + 1]; ++e) {
-        const int s = incidence.spring_entry[e] >> 1;
-        const int j = model.springs[s][1 - (incidence.spring_entry[e] & 1)];
-        const Eigen::Vector3d d = model.pinned[j] ? pi : Eigen::Vector3d(pi - p.segment<3>(3 * j));
-        sum.noalias() += coupling[s] * d;
-      }
-    }
-    y.segment<3>(row) = sum;
+  // A p = (M / h^2) p + sum over springs of [K -K; -K K] (p_a, p_b): one 3x3 product per
+  // spring, K (p_a - p_b), added to a and subtracted from b, instead of a product per block.
+  parallel::for_each(static_cast<int>(inertia.size()), [&](int i) {
+    const auto k = static_cast<Eigen::Index>(3 * i);
+    y.segment<3>(k) = inertia[i] * p.segment<3>(k);
+  });
+  parallel::scatter(springs, [&](int s) {
+    const auto [a, b] = model.springs[s];
+    const bool free_a = !model.pinned[a], free_b = !model.pinned[b];
+    // A pinned end is not an unknown: its p entries are zero and its row stays the identity's.
+    const Eigen::Vector3d d =
+        (free_a ? Eigen::Vector3d(p.segment<3>(3 * a)) : Eigen::Vector3d::Zero()) -
+        (free_b ? Eigen::Vector3d(p.segment<3>(3 * b)) : Eigen::Vector3d::Zero());
+    const Eigen::Vector3d kd = coupling[s] * d;
+    if (free_a) y.segment<3>(3 * a) += kd;
+    if (free_b) y.segment<3>(3 * b) -= kd;
   });
 }
 

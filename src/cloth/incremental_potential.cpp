@@ -22,10 +22,9 @@ IncrementalPotential::IncrementalPotential(const ClothModel& model)
       y_(3 * model.particle_count()),
       x_start_(3 * model.particle_count()),
       damping_axis_(model.springs.size(), Vec3::Zero()),
-      incidence_(model),
+      spring_schedule_(model.springs, model.particle_count()),
+      bend_schedule_(model.bends, model.particle_count()),
       bend_coupling_(model.springs.size(), 0.0),
-      spring_term_(model.springs.size()),
-      bend_term_(model.bends.size()),
       partials_(static_cast<std::size_t>(parallel::chunk_count(
           std::max({model.particle_count(), model.spring_count(), model.bend_count()})))) {
   for (int k = 0; k < model.spring_count(); ++k) {
@@ -127,72 +126,51 @@ double IncrementalPotential::difference(const Eigen::VectorXd& x,
 }
 
 void IncrementalPotential::gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const {
-  // Per spring, its force on a (minus that on b) with its dashpot; per bend, c e.
+  const double inv_h2 = 1.0 / (h_ * h_);
+  parallel::for_each(model_.particle_count(), [&](int i) {
+    gradient.segment<3>(3 * i) = (model_.mass[i] * inv_h2) * (at(x, i) - at(y_, i));
+  });
   const double c = model_.damping / h_;
-  parallel::for_each(model_.spring_count(), [&](int s) {
+  parallel::scatter(spring_schedule_, [&](int s) {
     const auto [a, b] = model_.springs[s];
     const Vec3& u = damping_axis_[s];
     const double axial = (at(x, a) - at(x_start_, a) - at(x, b) + at(x_start_, b)).dot(u);
-    spring_term_[s] =
-        spring_gradient(at(x, a), at(x, b), model_.stiffness[s], model_.rest_length[s]) +
-        (c * axial) * u;
+    const Vec3 g = spring_gradient(at(x, a), at(x, b), model_.stiffness[s], model_.rest_length[s]) +
+                   (c * axial) * u;
+    gradient.segment<3>(3 * a) += g;
+    gradient.segment<3>(3 * b) -= g;
   });
-  parallel::for_each(model_.bend_count(), [&](int k) {
-    const auto& p = model_.bends[k];
-    bend_term_[k] = model_.bend_stiffness[k] * bend_vector(at(x, p[0]), at(x, p[1]), at(x, p[2]));
+  parallel::scatter(bend_schedule_, [&](int k) {
+    const auto& particles = model_.bends[k];
+    const Vec3 e = model_.bend_stiffness[k] *
+                   bend_vector(at(x, particles[0]), at(x, particles[1]), at(x, particles[2]));
+    for (int j = 0; j < 3; ++j) gradient.segment<3>(3 * particles[j]) += kBendWeights[j] * e;
   });
-  // Per particle: inertia, then its springs and bends in element order.
-  const double inv_h2 = 1.0 / (h_ * h_);
-  const ParticleIncidence& in = incidence_;
   parallel::for_each(model_.particle_count(), [&](int i) {
-    if (model_.pinned[i]) {
-      gradient.segment<3>(3 * i).setZero();
-      return;
-    }
-    Vec3 g = (model_.mass[i] * inv_h2) * (at(x, i) - at(y_, i));
-    for (int e = in.spring_start[i]; e < in.spring_start[i + 1]; ++e) {
-      const int entry = in.spring_entry[e];
-      if (entry & 1) {
-        g -= spring_term_[entry >> 1];
-      } else {
-        g += spring_term_[entry >> 1];
-      }
-    }
-    for (int e = in.bend_start[i]; e < in.bend_start[i + 1]; ++e) {
-      const int entry = in.bend_entry[e];
-      g += kBendWeights[entry % 3] * bend_term_[entry / 3];
-    }
-    gradient.segment<3>(3 * i) = g;
+    if (model_.pinned[i]) gradient.segment<3>(3 * i).setZero();
   });
 }
 
 void IncrementalPotential::hessian(const Eigen::VectorXd& x, BlockHessian& blocks,
                                    bool projected) const {
-  // Per spring its block K (a pinned end: the products act on the free end only), then per
-  // particle its diagonal block M / h^2 + the sum of its springs' K in spring order.
+  const double inv_h2 = 1.0 / (h_ * h_);
+  parallel::for_each(model_.particle_count(), [&](int i) {
+    blocks.inertia[i] = model_.pinned[i] ? 1.0 : model_.mass[i] * inv_h2;
+    blocks.diagonal[i] = Mat3::Identity() * blocks.inertia[i];
+  });
+  // Per spring its block K with its dashpot and its bends' constant part (bend_energy.h), added
+  // to its free ends' diagonal blocks (a pinned end: the products act on the free end only).
   const double c = model_.damping / h_;
-  parallel::for_each(model_.spring_count(), [&](int s) {
+  parallel::scatter(spring_schedule_, [&](int s) {
     const auto [a, b] = model_.springs[s];
     const Vec3& u = damping_axis_[s];
     Mat3 k = spring_hessian_block(at(x, a), at(x, b), model_.stiffness[s], model_.rest_length[s],
                                   projected) +
              c * (u * u.transpose());
     k.diagonal().array() += bend_coupling_[s];
+    if (!model_.pinned[a]) blocks.diagonal[a] += k;
+    if (!model_.pinned[b]) blocks.diagonal[b] += k;
     blocks.coupling[s] = k;
-  });
-  const double inv_h2 = 1.0 / (h_ * h_);
-  const ParticleIncidence& in = incidence_;
-  parallel::for_each(model_.particle_count(), [&](int i) {
-    if (model_.pinned[i]) {
-      blocks.inertia[i] = 1.0;
-      blocks.diagonal[i] = Mat3::Identity();
-      return;
-    }
-    blocks.inertia[i] = model_.mass[i] * inv_h2;
-    Mat3 d = Mat3::Identity() * blocks.inertia[i];
-    for (int e = in.spring_start[i]; e < in.spring_start[i + 1]; ++e)
-      d += blocks.coupling[in.spring_entry[e] >> 1];
-    blocks.diagonal[i] = d;
   });
 }
 

@@ -1,12 +1,13 @@
 #pragma once
 // Deterministic parallel loops over flat arrays (OpenMP), for the cloth solvers' hot loops.
 //
-// Two rules keep the results independent of the thread count (and so the same bits run after
-// run): a parallel loop writes each output element from exactly one iteration (scatters such
-// as "add a spring's force to both its particles" become a per-spring pass into a buffer and
-// a per-particle gather over a fixed incidence list), and a sum is split into fixed chunks of
-// kChunk terms, each summed in order, the chunk totals then added in chunk order. A sum of at
-// most kChunk terms is therefore the plain sequential sum.
+// Three rules keep the results independent of the thread count (and so the same bits run after
+// run): a parallel loop writes each output element from exactly one iteration; scatters such
+// as "add a spring's force to both its particles" follow an ElementSchedule (see
+// animkit/cloth/element_schedule.h), whose segments running at once touch disjoint particles;
+// and a sum is split into fixed chunks of kChunk terms, each summed in order, the chunk totals
+// then added in chunk order. A sum of at most kChunk terms is therefore the plain sequential
+// sum.
 //
 // Loops below kMinParallelWork iterations run on the calling thread: a parallel region costs
 // a few microseconds to start, more than a small model's whole loop.
@@ -37,6 +38,24 @@ void for_each(int count, F&& f) {
   const int threads = threads_for(count);
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (int i = 0; i < count; ++i) f(i);
+}
+
+/// f(e) for every element of `schedule` (an ElementSchedule): its even segments, then its odd
+/// ones, each segment in order; the segments of one parity split over the threads when the
+/// schedule allows it.
+template <class Schedule, class F>
+void scatter(const Schedule& schedule, F&& f) {
+  const int threads = schedule.parallel ? threads_for(schedule.size()) : 1;
+  const int* order = schedule.order.data();
+  const int* start = schedule.segment_start.data();
+  constexpr int segments = Schedule::kSegments;
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  for (int phase = 0; phase < 2; ++phase) {
+#pragma omp for schedule(static)
+    for (int s = phase; s < segments; s += 2) {
+      for (int k = start[s]; k < start[s + 1]; ++k) f(order[k]);
+    }
+  }
 }
 
 /// Per chunk of kChunk indices, a few sums in fixed order: f(i, acc) adds index i's terms to

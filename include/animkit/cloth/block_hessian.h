@@ -2,15 +2,14 @@
 // The implicit step's Hessian stored by blocks, the form matrix-free solvers use: per particle
 // its mass term and its full 3x3 diagonal block, per spring the 3x3 block K its two particles
 // share (the matrix holds +K in both diagonal blocks and -K at (a, b) and (b, a)). Building it
-// writes the arrays in order; multiplying by it gathers each particle's row over its incident
-// springs (particle_incidence.h), so rows are independent and split over threads with no
-// scattered writes.
+// writes the arrays in order; multiplying by it reads them in the order of an ElementSchedule,
+// which lets threads share the springs with the same bits as one thread.
 #include <Eigen/Core>
 #include <array>
 #include <vector>
 
 #include "animkit/cloth/cloth_model.h"
-#include "animkit/cloth/particle_incidence.h"
+#include "animkit/cloth/element_schedule.h"
 
 namespace animkit {
 
@@ -18,13 +17,13 @@ struct BlockHessian {
   std::vector<Eigen::Matrix3d> diagonal;  ///< per particle, all terms (identity when pinned)
   std::vector<double> inertia;            ///< per particle: m / h^2 (1 when pinned)
   std::vector<Eigen::Matrix3d> coupling;  ///< per spring: K
-  ParticleIncidence incidence;            ///< the model's, for the row-by-row products
+  ElementSchedule springs;                ///< the model's springs, for the products
 
   explicit BlockHessian(const ClothModel& model)
       : diagonal(model.particle_count()),
         inertia(model.particle_count()),
         coupling(model.springs.size()),
-        incidence(model) {}
+        springs(model.springs, model.particle_count()) {}
 
   /// y = A p for the model's springs. A pinned particle's row is the identity's, and a spring
   /// touching it acts on the free end only.

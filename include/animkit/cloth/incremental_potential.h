@@ -12,16 +12,16 @@
 // not unknowns: their gradient entries are zero and they stay at x_n.
 //
 // Every loop is split over threads (src/core/parallel.h) with results independent of the
-// thread count: per-spring and per-bend terms go to buffers that each particle then gathers
-// in a fixed order, and sums are taken over fixed chunks. The buffers make the const methods
-// unsafe to call on one object from two threads at once.
+// thread count: springs and bends add into their particles in the order of an
+// ElementSchedule, and sums are taken over fixed chunks. The chunk sums' workspace makes the
+// const methods unsafe to call on one object from two threads at once.
 #include <Eigen/Core>
 #include <array>
 #include <vector>
 
 #include "animkit/cloth/block_hessian.h"
 #include "animkit/cloth/cloth_model.h"
-#include "animkit/cloth/particle_incidence.h"
+#include "animkit/cloth/element_schedule.h"
 
 namespace animkit {
 
@@ -71,11 +71,9 @@ class IncrementalPotential {
   double gradient_floor_ = 0.0;
   Eigen::VectorXd y_, x_start_;
   std::vector<Vec3> damping_axis_;  // per spring: unit axis at x_n (zero if degenerate)
-  ParticleIncidence incidence_;
+  ElementSchedule spring_schedule_, bend_schedule_;
   std::vector<double> bend_coupling_;  // per spring: the bends' constant K (times I), summed
-  // Workspace of the parallel loops: per-spring and per-bend gradient terms, chunk sums.
-  mutable std::vector<Vec3> spring_term_, bend_term_;
-  mutable std::vector<std::array<double, 2>> partials_;
+  mutable std::vector<std::array<double, 2>> partials_;  // chunk sums (parallel::sum)
 };
 
 }  // namespace animkit
