@@ -3,11 +3,16 @@
 // cotton sheet (whose spring loops split), and a lab cloth large enough that every loop splits.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cstring>
+#include <numeric>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "animkit/cloth/cloth_simulator.h"
+#include "animkit/cloth/element_schedule.h"
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/integrator_registry.h"
 #include "animkit/core/threads.h"
@@ -75,6 +80,25 @@ INSTANTIATE_TEST_SUITE_P(
                     // 4,225 particles: above the parallel threshold in every loop.
                     Scene{"lab65", {.cells = 64}, 2}),
     [](const testing::TestParamInfo<Scene>& param) { return param.param.name; });
+
+TEST(ElementSchedule, GridSpringsSplitIntoDisjointBands) {
+  const auto built = build_cloth(make_grid_cloth({.cells = 64}));
+  ASSERT_TRUE(built.has_value());
+  const ElementSchedule schedule(built->model.springs, built->model.particle_count());
+  EXPECT_TRUE(schedule.parallel);
+  std::vector<int> sorted = schedule.order;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<int> all(built->model.springs.size());
+  std::iota(all.begin(), all.end(), 0);
+  EXPECT_EQ(sorted, all);  // every spring once
+}
+
+TEST(ElementSchedule, ScatteredNumberingRunsOnOneThread) {
+  // Every element joins particle 0 to a far one: all segments share particle 0.
+  std::vector<std::array<int, 2>> springs;
+  for (int i = 1; i < 1000; ++i) springs.push_back({0, i});
+  EXPECT_FALSE(ElementSchedule(springs, 1000).parallel);
+}
 
 TEST(ThreadCount, SetAndRestoreTheDefault) {
   const ThreadCountGuard guard;
