@@ -213,18 +213,25 @@ void VertexBlockDescent::sweep(SweepTotals& totals) {
   // independent and split over threads in chunks of kSweepChunk. Each chunk sums its own
   // totals in particle order and the chunks are added in sweep order afterwards, so the
   // result is the same for any thread count.
-  const int threads = parallel::threads_for(static_cast<int>(sweep_particles_.size()));
-#pragma omp parallel num_threads(threads) if (threads > 1)
-  for (std::size_t c = 0; c + 1 < sweep_offsets_.size(); ++c) {
+  const auto run_chunk = [this](std::size_t c, int k) {
     const int begin = sweep_offsets_[c], end = sweep_offsets_[c + 1];
-    const int chunks = (end - begin + kSweepChunk - 1) / kSweepChunk;
+    SweepTotals chunk;
+    const int stop = std::min(end, begin + (k + 1) * kSweepChunk);
+    for (int e = begin + k * kSweepChunk; e < stop; ++e)
+      update_particle(sweep_particles_[static_cast<std::size_t>(e)], chunk);
+    chunk_totals_[static_cast<std::size_t>(chunk_offsets_[c] + k)] = chunk;
+  };
+  const int threads = parallel::threads_for(static_cast<int>(sweep_particles_.size()));
+  if (threads == 1) {
+    for (std::size_t c = 0; c + 1 < sweep_offsets_.size(); ++c) {
+      for (int k = 0; k < chunk_offsets_[c + 1] - chunk_offsets_[c]; ++k) run_chunk(c, k);
+    }
+  } else {
+#pragma omp parallel num_threads(threads)
+    for (std::size_t c = 0; c + 1 < sweep_offsets_.size(); ++c) {
+      const int chunks = chunk_offsets_[c + 1] - chunk_offsets_[c];
 #pragma omp for schedule(static)
-    for (int k = 0; k < chunks; ++k) {
-      SweepTotals chunk;
-      const int stop = std::min(end, begin + (k + 1) * kSweepChunk);
-      for (int e = begin + k * kSweepChunk; e < stop; ++e)
-        update_particle(sweep_particles_[static_cast<std::size_t>(e)], chunk);
-      chunk_totals_[static_cast<std::size_t>(chunk_offsets_[c] + k)] = chunk;
+      for (int k = 0; k < chunks; ++k) run_chunk(c, k);
     }
   }
   for (const SweepTotals& chunk : chunk_totals_) {
