@@ -12,6 +12,8 @@ packages=(
   libpng-dev libjpeg62-turbo-dev
   # Text drawings: FreeType and the default font, DejaVu Sans.
   libfreetype-dev fonts-dejavu-core
+  # OpenMP runtime for the cloth solvers' threads (also pulled in by g++).
+  libgomp1
   libgtest-dev libgmock-dev libbenchmark-dev
   # Pictures and the viewer: OpenGL through glvnd, Mesa's software renderer (llvmpipe) for EGL
   # without a display and GLX in a window, GLFW and Dear ImGui.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "../core/parallel.h"
 #include "animkit/cloth/bend_energy.h"
 #include "animkit/cloth/implicit_substep.h"
 #include "animkit/cloth/spring_energy.h"
@@ -54,12 +55,16 @@ VertexBlockDescent::VertexBlockDescent(const ClothModel& model, const VbdSetting
       chebyshev_step_(3 * model.particle_count()) {
   const int n = model.particle_count();
   sweep_offsets_.push_back(0);
+  chunk_offsets_.push_back(0);
   for (int c = 0; c < coloring_.color_count(); ++c) {
     for (int i : coloring_.members(c)) {
       if (!model.pinned[static_cast<std::size_t>(i)]) sweep_particles_.push_back(i);
     }
     sweep_offsets_.push_back(static_cast<int>(sweep_particles_.size()));
+    const int size = sweep_offsets_.back() - sweep_offsets_[sweep_offsets_.size() - 2];
+    chunk_offsets_.push_back(chunk_offsets_.back() + (size + kSweepChunk - 1) / kSweepChunk);
   }
+  chunk_totals_.resize(static_cast<std::size_t>(chunk_offsets_.back()));
   // Incidence lists by counting sort. A bend's coupling-only springs (stiffness 0) carry no
   // force and no dashpot, so they are left out; the bends are visited on their own.
   spring_start_.assign(static_cast<std::size_t>(n) + 1, 0);
@@ -204,11 +209,36 @@ void VertexBlockDescent::update_particle(int i, SweepTotals& totals) {
 }
 
 void VertexBlockDescent::sweep(SweepTotals& totals) {
-  // Colour by colour; within a colour the particles share no element, so this inner loop's
-  // order does not matter (and it can run in parallel, with per-thread totals summed in order).
-  for (std::size_t c = 0; c + 1 < sweep_offsets_.size(); ++c) {
-    for (int e = sweep_offsets_[c]; e < sweep_offsets_[c + 1]; ++e)
-      update_particle(sweep_particles_[static_cast<std::size_t>(e)], totals);
+  // Colour by colour; within a colour the particles share no element, so their updates are
+  // independent and split over threads in chunks of kSweepChunk. Each chunk sums its own
+  // totals in particle order and the chunks are added in sweep order afterwards, so the
+  // result is the same for any thread count.
+  const auto run_chunk = [this](std::size_t c, int k) {
+    const int begin = sweep_offsets_[c], end = sweep_offsets_[c + 1];
+    SweepTotals chunk;
+    const int stop = std::min(end, begin + (k + 1) * kSweepChunk);
+    for (int e = begin + k * kSweepChunk; e < stop; ++e)
+      update_particle(sweep_particles_[static_cast<std::size_t>(e)], chunk);
+    chunk_totals_[static_cast<std::size_t>(chunk_offsets_[c] + k)] = chunk;
+  };
+  const int threads = parallel::threads_for(static_cast<int>(sweep_particles_.size()));
+  if (threads == 1) {
+    for (std::size_t c = 0; c + 1 < sweep_offsets_.size(); ++c) {
+      for (int k = 0; k < chunk_offsets_[c + 1] - chunk_offsets_[c]; ++k) run_chunk(c, k);
+    }
+  } else {
+#pragma omp parallel num_threads(threads)
+    for (std::size_t c = 0; c + 1 < sweep_offsets_.size(); ++c) {
+      const int chunks = chunk_offsets_[c + 1] - chunk_offsets_[c];
+#pragma omp for schedule(static)
+      for (int k = 0; k < chunks; ++k) run_chunk(c, k);
+    }
+  }
+  for (const SweepTotals& chunk : chunk_totals_) {
+    totals.decrease += chunk.decrease;
+    totals.slope += chunk.slope;
+    totals.backtracks += chunk.backtracks;
+    totals.moved += chunk.moved;
   }
 }
 

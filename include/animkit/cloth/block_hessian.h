@@ -2,14 +2,15 @@
 // The implicit step's Hessian stored by blocks, the form matrix-free solvers use: per particle
 // its mass term and its full 3x3 diagonal block, per spring the 3x3 block K its two particles
 // share (the matrix holds +K in both diagonal blocks and -K at (a, b) and (b, a)). Building it
-// writes the arrays in order; multiplying by it reads them in order. No sparse index
-// structure, no scattered writes.
+// writes the arrays in order; multiplying by it reads them in the order of an ElementSchedule,
+// which lets threads share the springs with the same bits as one thread.
 #include <Eigen/Core>
 #include <array>
 #include <vector>
 
 #include "animkit/cloth/cloth_model.h"
 #include "animkit/cloth/energy_term.h"
+#include "animkit/cloth/element_schedule.h"
 
 namespace animkit {
 
@@ -21,11 +22,13 @@ struct BlockHessian {
   /// terms. Their diagonal blocks are also added into `diagonal`, which is all preconditioners
   /// see of them; the products, and so CG's answer, include them all.
   std::vector<HessianBlock> extra;
+  ElementSchedule springs;                ///< the model's springs, for the products
 
   explicit BlockHessian(const ClothModel& model)
       : diagonal(model.particle_count()),
         inertia(model.particle_count()),
-        coupling(model.springs.size()) {}
+        coupling(model.springs.size()),
+        springs(model.springs, model.particle_count()) {}
 
   /// y = A p for the model's springs. A pinned particle's row is the identity's, and a spring
   /// touching it acts on the free end only.

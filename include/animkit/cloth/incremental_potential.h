@@ -11,13 +11,20 @@
 // a convex quadratic, so the step stays stable (and dissipative) at any h. Extra energy terms
 // (energy_term.h) add to g, its gradient and Hessian. Pinned particles are not unknowns: their
 // gradient entries are zero and they stay at x_n.
+//
+// Every loop is split over threads (src/core/parallel.h) with results independent of the
+// thread count: springs and bends add into their particles in the order of an
+// ElementSchedule, and sums are taken over fixed chunks. The chunk sums' workspace makes the
+// const methods unsafe to call on one object from two threads at once.
 #include <Eigen/Core>
+#include <array>
 #include <memory>
 #include <vector>
 
 #include "animkit/cloth/block_hessian.h"
 #include "animkit/cloth/cloth_model.h"
 #include "animkit/cloth/energy_term.h"
+#include "animkit/cloth/element_schedule.h"
 
 namespace animkit {
 
@@ -75,6 +82,9 @@ class IncrementalPotential {
   mutable std::vector<HessianBlock> term_blocks_;  // scratch of hessian(), kept for its capacity
 
   void add_term_hessians(const Eigen::VectorXd& x, BlockHessian& blocks, bool projected) const;
+  ElementSchedule spring_schedule_, bend_schedule_;
+  std::vector<double> bend_coupling_;  // per spring: the bends' constant K (times I), summed
+  mutable std::vector<std::array<double, 2>> partials_;  // chunk sums (parallel::sum)
 };
 
 }  // namespace animkit

@@ -62,6 +62,11 @@ class VertexBlockDescent final : public ClothIntegrator {
   GraphColoring coloring_;
   // Free particles grouped by colour: colour c is sweep_particles_[sweep_offsets_[c], [c + 1]).
   std::vector<int> sweep_particles_, sweep_offsets_;
+  // The sweep's parallel chunks: colour c's are chunk_totals_[chunk_offsets_[c], [c + 1]),
+  // kSweepChunk particles each (small enough that a colour of a mid-size cloth still splits).
+  static constexpr int kSweepChunk = 64;
+  std::vector<int> chunk_offsets_;
+  std::vector<SweepTotals> chunk_totals_;
   // Per particle, its incident springs of stiffness > 0 and its bends (compressed rows).
   std::vector<int> spring_start_, bend_start_;
   std::vector<IncidentSpring> incident_springs_;
