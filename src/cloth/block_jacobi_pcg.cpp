@@ -2,23 +2,22 @@
 
 #include <cmath>
 
+#include "../core/parallel.h"
+
 namespace animkit {
 
 BlockJacobiPcg::BlockJacobiPcg(const ClothModel& model)
-    : model_(model),
-      inverse_blocks_(model.particle_count()),
-      workspace_(3 * model.particle_count()) {}
+    : model_(model), inverse_blocks_(model.particle_count()), workspace_(model.particle_count()) {}
 
 void BlockJacobiPcg::apply_preconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
-  for (std::size_t i = 0; i < inverse_blocks_.size(); ++i) {
-    const auto k = static_cast<Eigen::Index>(3 * i);
-    z.segment<3>(k).noalias() = inverse_blocks_[i] * r.segment<3>(k);
-  }
+  parallel::for_each(static_cast<int>(inverse_blocks_.size()), [&](int i) {
+    z.segment<3>(3 * i).noalias() = inverse_blocks_[i] * r.segment<3>(3 * i);
+  });
 }
 
 PcgResult BlockJacobiPcg::solve(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                                 double tolerance, int max_iterations) {
-  for (std::size_t i = 0; i < inverse_blocks_.size(); ++i) {
+  parallel::for_each(static_cast<int>(inverse_blocks_.size()), [&](int i) {
     const Eigen::Matrix3d& block = a.diagonal[i];
     // Mass / h^2 dominates each diagonal block, so it is invertible even with the exact
     // Hessian; should it not be, fall back to the inverse of its diagonal's magnitude.
@@ -26,7 +25,7 @@ PcgResult BlockJacobiPcg::solve(const BlockHessian& a, const Eigen::VectorXd& b,
     block.computeInverseWithCheck(inverse_blocks_[i], invertible);
     if (!invertible)
       inverse_blocks_[i] = block.diagonal().cwiseAbs().cwiseMax(1e-300).cwiseInverse().asDiagonal();
-  }
+  });
   return preconditioned_cg(
       model_, a, b, x, tolerance, max_iterations,
       [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { apply_preconditioner(r, z); },

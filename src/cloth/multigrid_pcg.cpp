@@ -7,7 +7,7 @@ namespace animkit {
 MultigridPcg::MultigridPcg(const ClothModel& model, const MultigridOptions& options)
     : model_(model),
       multigrid_(std::make_unique<SmoothedAggregation>(model, options)),
-      workspace_(3 * model.particle_count()) {}
+      workspace_(model.particle_count()) {}
 
 MultigridPcg::~MultigridPcg() = default;
 
