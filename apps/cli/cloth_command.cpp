@@ -67,7 +67,7 @@ namespace {
 // The grid to simulate: the lab's, or a physical sheet of the --material.
 Result<GridClothOptions> grid_of(const ClothArgs& args) {
   GridClothOptions grid = args.grid;
-  if (args.material.empty()) return grid;
+  if (args.material.empty() && !args.material_given) return grid;
   const MaterialPreset* preset = find_material(args.material);
   if (!preset) {
     return fail("unknown material " + quote_input(args.material) +
@@ -297,6 +297,7 @@ std::function<int()> add_cloth_command(CLI::App& app) {
   add_picture_options(*cloth, args->pictures, "final.png");
   return [args, cloth] {
     args->gravity_given = cloth->count("--gravity") > 0;
+    args->material_given = cloth->count("--material") > 0;
     for (const char* option : {"--mass", "--stiffness", "--damping"}) {
       if (cloth->count(option) > 0) args->lab_options_given.emplace_back(option);
     }

@@ -22,6 +22,7 @@ struct ClothArgs {
   double tolerance = NewtonSettings{}.tolerance;
   /// A material preset (material.h); empty: the lab's per-particle parameters.
   std::string material;
+  bool material_given = false;  ///< --material was on the command line (even empty: an error)
   bool gravity_given = false;  ///< --gravity was on the command line (else 9.81 with a material)
   /// The lab-parameter options given on the command line (--mass, ...): a material sets them.
   std::vector<std::string> lab_options_given;

@@ -151,6 +151,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCloth{"--frames 0", "--frames must be between 1 and"},
         BadCloth{"--substeps -2", "substeps must be between 1 and 100000"},
         BadCloth{"--tolerance 2", "tolerance must be in (0, 1), got 2"},
+        BadCloth{"--material ''", "unknown material ''"},
         BadCloth{"--integrator verlet", "unknown integrator 'verlet'"},
         BadCloth{"--material tweed", "unknown material 'tweed' (expected one of: cotton, silk"},
         BadCloth{"--material COTTON", "unknown material 'COTTON' (expected one of: cotton, silk"},
