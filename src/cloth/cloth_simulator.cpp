@@ -25,7 +25,7 @@ int SimulationOptions::effective_substeps() const {
 }
 
 struct ClothSimulator::Impl {
-  ClothModel model;
+  std::shared_ptr<const ClothModel> model;  // shared with the integrator, never changed
   ClothState state;
   ClothState backup;  // the state before the current step, to undo a diverged one
   SimulationOptions options;
@@ -40,7 +40,7 @@ ClothSimulator& ClothSimulator::operator=(ClothSimulator&&) noexcept = default;
 ClothSimulator::~ClothSimulator() = default;
 
 const ClothModel& ClothSimulator::model() const {
-  return impl_->model;
+  return *impl_->model;
 }
 const ClothState& ClothSimulator::state() const {
   return impl_->state;
@@ -57,10 +57,8 @@ Result<ClothSimulator> ClothSimulator::create(const ClothDesc& desc,
   if (auto error = options.validate()) return fail(error->message);
   auto built = build_cloth(desc);
   if (!built) return fail(built.error().message);
-  // The integrators keep a reference to the model: it lives in the heap-allocated Impl, so
-  // its address survives moves of the simulator.
   auto impl = std::make_unique<Impl>();
-  impl->model = std::move(built->model);
+  impl->model = std::make_shared<const ClothModel>(std::move(built->model));
   impl->state = std::move(built->state);
   impl->backup = impl->state;
   impl->options = options;
@@ -102,7 +100,7 @@ Result<void> ClothSimulator::add_energy_term(std::shared_ptr<EnergyTerm> term) {
 }
 
 Result<void> ClothSimulator::set_external_forces(const Eigen::VectorXd& forces) {
-  const Eigen::Index size = 3 * static_cast<Eigen::Index>(impl_->model.particle_count());
+  const Eigen::Index size = 3 * static_cast<Eigen::Index>(impl_->model->particle_count());
   if (forces.size() != size) {
     return fail("external forces have " + std::to_string(forces.size()) +
                 " entries but the cloth needs " + std::to_string(size));
@@ -117,7 +115,7 @@ void ClothSimulator::clear_external_forces() {
 }
 
 Result<void> ClothSimulator::set_state(const ClothState& state) {
-  const Eigen::Index size = 3 * static_cast<Eigen::Index>(impl_->model.particle_count());
+  const Eigen::Index size = 3 * static_cast<Eigen::Index>(impl_->model->particle_count());
   if (state.positions.size() != size || state.velocities.size() != size) {
     return fail("state has " + std::to_string(state.positions.size() / 3) +
                 " particles but the cloth has " + std::to_string(size / 3));
@@ -126,8 +124,8 @@ Result<void> ClothSimulator::set_state(const ClothState& state) {
     return fail("state has a non-finite position or velocity");
   }
   impl_->state = state;
-  for (int i = 0; i < impl_->model.particle_count(); ++i) {
-    if (impl_->model.pinned[i]) impl_->state.velocities.segment<3>(3 * i).setZero();
+  for (int i = 0; i < impl_->model->particle_count(); ++i) {
+    if (impl_->model->pinned[i]) impl_->state.velocities.segment<3>(3 * i).setZero();
   }
   return {};
 }
@@ -159,7 +157,7 @@ Result<StepReport> ClothSimulator::step(double dt) {
                 " s): " + *problem);
   }
   ++s.steps;
-  report.energy = cloth_energy(s.model, s.state).total;
+  report.energy = cloth_energy(*s.model, s.state).total;
   report.ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return report;

@@ -135,6 +135,8 @@ Result<ConvergenceStudy> run_convergence_study(const ClothModel& model, const Cl
   if (!all_finite(initial.positions) || !all_finite(initial.velocities))
     return fail("the initial state has a non-finite position or velocity");
 
+  // Every solver's integrator shares one copy of the model.
+  const auto shared_model = std::make_shared<const ClothModel>(model);
   ConvergenceStudy study;
   study.dt = options.dt;
   study.tolerance = options.tolerance;
@@ -145,7 +147,7 @@ Result<ConvergenceStudy> run_convergence_study(const ClothModel& model, const Cl
     set_tolerance(settings, options.tolerance);
     set_record_iterations(settings, true);
     if (auto error = validate(settings)) return fail(name + ": " + error->message);
-    const std::unique_ptr<ClothIntegrator> integrator = make_integrator(model, settings);
+    const std::unique_ptr<ClothIntegrator> integrator = make_integrator(shared_model, settings);
     ClothState state = initial;
     SolverStudy solver{name, {}, {}};
     solver.steps.reserve(static_cast<std::size_t>(options.steps));

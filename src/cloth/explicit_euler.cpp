@@ -33,8 +33,8 @@ void cloth_forces(const ClothModel& model, const Eigen::VectorXd& positions,
   }
 }
 
-ExplicitEuler::ExplicitEuler(const ClothModel& model)
-    : model_(model), forces_(3 * model.particle_count()) {}
+ExplicitEuler::ExplicitEuler(std::shared_ptr<const ClothModel> model)
+    : model_owner_(std::move(model)), model_(*model_owner_), forces_(3 * model_.particle_count()) {}
 
 void ExplicitEuler::step(ClothState& state, double h, StepReport& report,
                          const Eigen::VectorXd* external_forces) {

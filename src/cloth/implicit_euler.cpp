@@ -45,27 +45,28 @@ struct ImplicitEuler::DirectSolver {
   Eigen::VectorXd rhs, solution;  // in the pattern's order
 };
 
-ImplicitEuler::ImplicitEuler(const ClothModel& model, const NewtonSettings& options)
-    : model_(model),
+ImplicitEuler::ImplicitEuler(std::shared_ptr<const ClothModel> model, const NewtonSettings& options)
+    : model_owner_(std::move(model)),
+      model_(*model_owner_),
       options_(options),
-      potential_(model),
-      hessian_(model),
-      pcg_(model),
-      x_(3 * model.particle_count()),
-      gradient_(3 * model.particle_count()),
-      dx_(3 * model.particle_count()),
-      trial_(3 * model.particle_count()),
-      rhs_(3 * model.particle_count()) {
+      potential_(model_),
+      hessian_(model_),
+      pcg_(model_),
+      x_(3 * model_.particle_count()),
+      gradient_(3 * model_.particle_count()),
+      dx_(3 * model_.particle_count()),
+      trial_(3 * model_.particle_count()),
+      rhs_(3 * model_.particle_count()) {
   if (options_.linear_solver == LinearSolverKind::direct) {
     direct_ = std::make_unique<DirectSolver>();
-    direct_->pattern = build_hessian_pattern(model, PatternLayout::upper_amd);
-    direct_->rhs.resize(3 * model.particle_count());
-    direct_->solution.resize(3 * model.particle_count());
+    direct_->pattern = build_hessian_pattern(model_, PatternLayout::upper_amd);
+    direct_->rhs.resize(3 * model_.particle_count());
+    direct_->solution.resize(3 * model_.particle_count());
     direct_->ldlt.analyzePattern(direct_->pattern.matrix);  // once: the pattern never changes
   }
-  // The hierarchy's aggregates are built once per model; each solve redoes its numbers.
+  // The hierarchy's aggregates are built once per model_; each solve redoes its numbers.
   if (options_.linear_solver == LinearSolverKind::multigrid)
-    multigrid_ = std::make_unique<MultigridPcg>(model);
+    multigrid_ = std::make_unique<MultigridPcg>(model_);
 }
 
 ImplicitEuler::~ImplicitEuler() = default;
@@ -110,17 +111,14 @@ bool ImplicitEuler::solve_newton_system(double relative_gradient, IterationRecor
   return !pcg.indefinite;
 }
 
+// The substep as a recipe of named stages (SPEC.md section 4): start at the prediction,
+// then Newton iterations (direction, step bound, line search, accept) until the stopping
+// test, then the velocity update. Each stage adds its time to the report.
 void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
                          const Eigen::VectorXd* external_forces) {
   const auto substep_start = StageClock::now();
-  auto t = substep_start;
-  potential_.prepare(state, h, external_forces);
-  x_ = potential_.predicted();
-  potential_.gradient(x_, gradient_);
-  double gradient_norm = gradient_.norm();
-  report.ms_gradient += ms_since(t);
-
-  const double start_norm = gradient_norm;
+  const double start_norm = start_substep(state, h, external_forces, report);
+  double gradient_norm = start_norm;
   const GradientStop stop =
       begin_implicit_substep(potential_, start_norm, options_.tolerance, report);
   bool converged = stop.reached(gradient_norm);
@@ -128,84 +126,149 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
     IterationRecord record;
     // g itself is needed only for the record: the line search works with differences.
     if (options_.record_iterations) record.objective = potential_.value(x_);
-
-    // Hessian and Newton direction: exact Hessian first unless always projecting; redo with
-    // the projected one when the solve meets negative curvature or gives no descent.
-    bool projected = options_.projection == HessianProjection::always;
-    double slope = 0.0;
-    for (;;) {
-      t = StageClock::now();
-      potential_.hessian(x_, hessian_, projected);
-      report.ms_hessian += ms_since(t);
-      t = StageClock::now();
-      const bool positive = solve_newton_system(gradient_norm / start_norm, record);
-      slope = gradient_.dot(dx_);
-      report.ms_linear_solve += ms_since(t);
-      if ((positive && slope < 0.0) || projected) break;
-      projected = true;
-    }
-    record.projected = projected;
-    report.projected_iterations += projected ? 1 : 0;
-    if (!(slope < 0.0)) {
-      // Only rounding can make the SPD system's solution ascend; steepest descent then.
-      dx_ = -gradient_;
-      slope = -gradient_norm * gradient_norm;
-    }
-
-    // Backtracking line search (SPEC.md): alpha = 1/beta; repeat alpha = beta alpha,
-    // x' = x + alpha dx, until g(x') <= g(x) + gamma alpha grad.dx. The difference
-    // g(x') - g(x) is evaluated directly (see IncrementalPotential::difference); a NaN rejects.
-    t = StageClock::now();
-    double alpha = 1.0 / options_.beta;
-    double decrease = 0.0;
-    bool accepted = false;
-    for (int s = 0; s <= options_.max_line_search_steps && !accepted; ++s) {
-      alpha *= options_.beta;
-      trial_ = alpha * dx_;
-      decrease = potential_.difference(x_, trial_);
-      accepted = decrease <= options_.gamma * alpha * slope;
-      record.line_search_steps = s;
-    }
-    // The projected Hessian drops the negative curvature of compressed springs, so where the
-    // cloth buckles its quadratic model is stiffer than g and the full step falls short: g
-    // then drops by nearly the whole linear prediction (a quadratic model predicts half).
-    // There, doubling the step while g keeps decreasing turns Newton's slow linear crawl
-    // through a buckling mode into a few long steps (still a descent: each doubling is kept
-    // only if g is lower).
-    if (accepted && projected && alpha == 1.0 && decrease <= 0.75 * slope) {
-      for (int e = 0; e < kMaxStepDoublings; ++e) {
-        dx_ = 2.0 * trial_;
-        const double longer = potential_.difference(x_, dx_);
-        if (!(longer < decrease)) break;
-        decrease = longer;
-        trial_.swap(dx_);
-        alpha *= 2.0;
-      }
-    }
-    report.ms_line_search += ms_since(t);
+    const double slope =
+        newton_direction(gradient_norm, gradient_norm / start_norm, record, report);
+    const double bound = step_bound(report);
+    const std::optional<double> decrease = line_search(slope, bound, record, report);
     report.line_search_steps += record.line_search_steps;
     report.linear_iterations += record.linear_iterations;
-    if (!accepted) break;  // no decrease found: keep x (reported as not converged)
-    x_ += trial_;
-    t = StageClock::now();
-    potential_.gradient(x_, gradient_);
-    gradient_norm = gradient_.norm();
-    report.ms_gradient += ms_since(t);
+    if (!decrease) break;  // no decrease found: keep x (reported as not converged)
+    gradient_norm = accept_step(report);
     ++report.newton_iterations;
     converged = stop.reached(gradient_norm);
 
     record.gradient_norm = gradient_norm;
     record.ms = ms_since(substep_start);
-    record.decrease = decrease;
+    record.decrease = *decrease;
     if (options_.record_iterations) record.objective_after = potential_.value(x_);
     record.slope = slope;
-    record.alpha = alpha;
     if (options_.record_iterations) report.iterations.push_back(record);
   }
   report.gradient_norm_end = gradient_norm;
   report.converged = report.converged && converged;
-
   finish_implicit_substep(model_, x_, h, state);
+}
+
+// Predict y, then start at y; with energy terms that bound steps (contact), at the admissible
+// point farthest along the move from x_n to y instead (x_n itself is admissible: the previous
+// substep ended there). Returns |grad g| there, the stopping test's reference.
+double ImplicitEuler::start_substep(const ClothState& state, double h,
+                                    const Eigen::VectorXd* external_forces, StepReport& report) {
+  auto t = StageClock::now();
+  potential_.prepare(state, h, external_forces);
+  x_ = potential_.predicted();
+  if (potential_.has_terms()) {
+    trial_ = x_ - state.positions;
+    const double bound = potential_.max_step(state.positions, trial_);
+    report.step_bound_min = std::min(report.step_bound_min, bound);
+    if (bound < 1.0) x_ = state.positions + bound * trial_;
+    report.ms_step_bound += ms_since(t);
+    t = StageClock::now();
+    potential_.update_terms(x_);
+    report.ms_term_updates += ms_since(t);
+    t = StageClock::now();
+  }
+  potential_.gradient(x_, gradient_);
+  report.ms_gradient += ms_since(t);
+  return gradient_.norm();
+}
+
+// Hessian and Newton direction dx: the exact Hessian first unless always projecting; redone
+// with the projected one when the solve meets negative curvature or gives no descent.
+// Returns the slope grad g . dx < 0.
+double ImplicitEuler::newton_direction(double gradient_norm, double relative_gradient,
+                                       IterationRecord& record, StepReport& report) {
+  bool projected = options_.projection == HessianProjection::always;
+  double slope = 0.0;
+  for (;;) {
+    auto t = StageClock::now();
+    potential_.hessian(x_, hessian_, projected);
+    report.ms_hessian += ms_since(t);
+    t = StageClock::now();
+    const bool positive = solve_newton_system(relative_gradient, record);
+    slope = gradient_.dot(dx_);
+    report.ms_linear_solve += ms_since(t);
+    if ((positive && slope < 0.0) || projected) break;
+    projected = true;
+  }
+  record.projected = projected;
+  report.projected_iterations += projected ? 1 : 0;
+  if (!(slope < 0.0)) {
+    // Only rounding can make the SPD system's solution ascend; steepest descent then.
+    dx_ = -gradient_;
+    slope = -gradient_norm * gradient_norm;
+  }
+  return slope;
+}
+
+// The longest fraction of dx the energy terms admit (continuous collision detection for
+// contact); 1 without terms.
+double ImplicitEuler::step_bound(StepReport& report) {
+  if (!potential_.has_terms()) return 1.0;
+  const auto t = StageClock::now();
+  const double bound = potential_.max_step(x_, dx_);
+  report.step_bound_min = std::min(report.step_bound_min, bound);
+  report.ms_step_bound += ms_since(t);
+  return bound;
+}
+
+// Backtracking line search (SPEC.md): alpha = 1/beta; repeat alpha = beta alpha,
+// x' = x + alpha dx, until g(x') <= g(x) + gamma alpha grad.dx, starting no longer than the
+// step bound. The difference g(x') - g(x) is evaluated directly (see
+// IncrementalPotential::difference); a NaN or an infinity rejects. On success, trial_ holds
+// the accepted step alpha dx and the decrease g(x') - g(x) is returned.
+std::optional<double> ImplicitEuler::line_search(double slope, double bound,
+                                                 IterationRecord& record, StepReport& report) {
+  const auto t = StageClock::now();
+  double alpha = std::min(1.0, bound) / options_.beta;
+  double decrease = 0.0;
+  bool accepted = false;
+  for (int s = 0; s <= options_.max_line_search_steps && !accepted; ++s) {
+    alpha *= options_.beta;
+    trial_ = alpha * dx_;
+    decrease = potential_.difference(x_, trial_);
+    accepted = decrease <= options_.gamma * alpha * slope;
+    record.line_search_steps = s;
+  }
+  if (accepted && record.projected && alpha == 1.0 && decrease <= 0.75 * slope) {
+    extend_projected_step(decrease, alpha);
+  }
+  record.alpha = alpha;
+  report.ms_line_search += ms_since(t);
+  if (!accepted) return std::nullopt;
+  return decrease;
+}
+
+// The projected Hessian drops the negative curvature of compressed springs, so where the
+// cloth buckles its quadratic model is stiffer than g and the full step falls short: g then
+// drops by nearly the whole linear prediction (a quadratic model predicts half). There,
+// doubling the step while g keeps decreasing turns Newton's slow linear crawl through a
+// buckling mode into a few long steps (still a descent: each doubling is kept only if g is
+// lower, and only if the energy terms admit it).
+void ImplicitEuler::extend_projected_step(double& decrease, double& alpha) {
+  for (int e = 0; e < kMaxStepDoublings; ++e) {
+    dx_ = 2.0 * trial_;
+    if (potential_.has_terms() && potential_.max_step(x_, dx_) < 1.0) break;
+    const double longer = potential_.difference(x_, dx_);
+    if (!(longer < decrease)) break;
+    decrease = longer;
+    trial_.swap(dx_);
+    alpha *= 2.0;
+  }
+}
+
+// x += the accepted step; the terms see the new iterate; returns |grad g| there.
+double ImplicitEuler::accept_step(StepReport& report) {
+  x_ += trial_;
+  auto t = StageClock::now();
+  if (potential_.has_terms()) {
+    potential_.update_terms(x_);
+    report.ms_term_updates += ms_since(t);
+    t = StageClock::now();
+  }
+  potential_.gradient(x_, gradient_);
+  report.ms_gradient += ms_since(t);
+  return gradient_.norm();
 }
 
 }  // namespace animkit

@@ -70,6 +70,16 @@ void IncrementalPotential::prepare(const ClothState& state, double h,
   for (const auto& term : terms_) term->prepare(state, h);
 }
 
+void IncrementalPotential::update_terms(const Eigen::VectorXd& x) {
+  for (const auto& term : terms_) term->update(x);
+}
+
+double IncrementalPotential::max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) {
+  double bound = 1.0;
+  for (const auto& term : terms_) bound = std::min(bound, term->max_step(x, step));
+  return bound;
+}
+
 double IncrementalPotential::value(const Eigen::VectorXd& x) const {
   using Acc = std::array<double, 2>;
   const double inertia = parallel::sum<2>(model_.particle_count(), partials_, [&](int i, Acc& acc) {

@@ -107,11 +107,11 @@ void set_record_iterations(IntegratorSettings& settings, bool record) {
       settings);
 }
 
-std::unique_ptr<ClothIntegrator> make_integrator(const ClothModel& model,
+std::unique_ptr<ClothIntegrator> make_integrator(std::shared_ptr<const ClothModel> model,
                                                  const IntegratorSettings& settings) {
   // One case per alternative: a new integrator that is not added here fails to compile.
   struct Maker {
-    const ClothModel& model;
+    const std::shared_ptr<const ClothModel>& model;
     std::unique_ptr<ClothIntegrator> operator()(const ExplicitEulerSettings&) const {
       return std::make_unique<ExplicitEuler>(model);
     }

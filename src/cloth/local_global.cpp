@@ -29,16 +29,18 @@ std::optional<Error> LocalGlobalSettings::validate() const {
   return std::nullopt;
 }
 
-LocalGlobal::LocalGlobal(const ClothModel& model, const LocalGlobalSettings& settings)
-    : model_(model),
+LocalGlobal::LocalGlobal(std::shared_ptr<const ClothModel> model,
+                         const LocalGlobalSettings& settings)
+    : model_owner_(std::move(model)),
+      model_(*model_owner_),
       settings_(settings),
-      potential_(model),
-      system_(model),
-      x_(3 * model.particle_count()),
-      previous_(3 * model.particle_count()),
-      gradient_(3 * model.particle_count()),
-      direction_(3 * model.particle_count()),
-      step_(3 * model.particle_count()) {}
+      potential_(model_),
+      system_(model_),
+      x_(3 * model_.particle_count()),
+      previous_(3 * model_.particle_count()),
+      gradient_(3 * model_.particle_count()),
+      direction_(3 * model_.particle_count()),
+      step_(3 * model_.particle_count()) {}
 
 void LocalGlobal::step(ClothState& state, double h, StepReport& report,
                        const Eigen::VectorXd* external_forces) {

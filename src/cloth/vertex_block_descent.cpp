@@ -43,22 +43,24 @@ std::optional<Error> VbdSettings::validate() const {
   return std::nullopt;
 }
 
-VertexBlockDescent::VertexBlockDescent(const ClothModel& model, const VbdSettings& options)
-    : model_(model),
+VertexBlockDescent::VertexBlockDescent(std::shared_ptr<const ClothModel> model,
+                                       const VbdSettings& options)
+    : model_owner_(std::move(model)),
+      model_(*model_owner_),
       options_(options),
-      potential_(model),
-      coloring_(color_cloth_particles(model)),
-      x_(3 * model.particle_count()),
-      gradient_(3 * model.particle_count()),
-      previous_(3 * model.particle_count()),
-      before_sweep_(3 * model.particle_count()),
-      chebyshev_step_(3 * model.particle_count()) {
-  const int n = model.particle_count();
+      potential_(model_),
+      coloring_(color_cloth_particles(model_)),
+      x_(3 * model_.particle_count()),
+      gradient_(3 * model_.particle_count()),
+      previous_(3 * model_.particle_count()),
+      before_sweep_(3 * model_.particle_count()),
+      chebyshev_step_(3 * model_.particle_count()) {
+  const int n = model_.particle_count();
   sweep_offsets_.push_back(0);
   chunk_offsets_.push_back(0);
   for (int c = 0; c < coloring_.color_count(); ++c) {
     for (int i : coloring_.members(c)) {
-      if (!model.pinned[static_cast<std::size_t>(i)]) sweep_particles_.push_back(i);
+      if (!model_.pinned[static_cast<std::size_t>(i)]) sweep_particles_.push_back(i);
     }
     sweep_offsets_.push_back(static_cast<int>(sweep_particles_.size()));
     const int size = sweep_offsets_.back() - sweep_offsets_[sweep_offsets_.size() - 2];
@@ -69,12 +71,12 @@ VertexBlockDescent::VertexBlockDescent(const ClothModel& model, const VbdSetting
   // force and no dashpot, so they are left out; the bends are visited on their own.
   spring_start_.assign(static_cast<std::size_t>(n) + 1, 0);
   bend_start_.assign(static_cast<std::size_t>(n) + 1, 0);
-  for (int s = 0; s < model.spring_count(); ++s) {
-    if (model.stiffness[static_cast<std::size_t>(s)] <= 0.0) continue;
-    for (int end : model.springs[static_cast<std::size_t>(s)])
+  for (int s = 0; s < model_.spring_count(); ++s) {
+    if (model_.stiffness[static_cast<std::size_t>(s)] <= 0.0) continue;
+    for (int end : model_.springs[static_cast<std::size_t>(s)])
       ++spring_start_[static_cast<std::size_t>(end) + 1];
   }
-  for (const auto& bend : model.bends) {
+  for (const auto& bend : model_.bends) {
     for (int p : bend) ++bend_start_[static_cast<std::size_t>(p) + 1];
   }
   for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
@@ -86,16 +88,16 @@ VertexBlockDescent::VertexBlockDescent(const ClothModel& model, const VbdSetting
   incident_length_.resize(incident_springs_.size());
   incident_axial_.resize(incident_springs_.size());
   std::vector<int> fill(spring_start_.begin(), spring_start_.end() - 1);
-  for (int s = 0; s < model.spring_count(); ++s) {
-    if (model.stiffness[static_cast<std::size_t>(s)] <= 0.0) continue;
-    const auto [a, b] = model.springs[static_cast<std::size_t>(s)];
+  for (int s = 0; s < model_.spring_count(); ++s) {
+    if (model_.stiffness[static_cast<std::size_t>(s)] <= 0.0) continue;
+    const auto [a, b] = model_.springs[static_cast<std::size_t>(s)];
     incident_springs_[static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++)] = {s, b};
     incident_springs_[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = {s, a};
   }
   fill.assign(bend_start_.begin(), bend_start_.end() - 1);
-  for (int k = 0; k < model.bend_count(); ++k) {
+  for (int k = 0; k < model_.bend_count(); ++k) {
     for (int slot = 0; slot < 3; ++slot) {
-      const int p = model.bends[static_cast<std::size_t>(k)][static_cast<std::size_t>(slot)];
+      const int p = model_.bends[static_cast<std::size_t>(k)][static_cast<std::size_t>(slot)];
       incident_bends_[static_cast<std::size_t>(fill[static_cast<std::size_t>(p)]++)] = {k, slot};
     }
   }

@@ -156,7 +156,8 @@ TEST(LocalGlobal, ChangingTheTimeStepRefactorizes) {
   // still lands on Newton's solution.
   const ClothDesc desc = crumpled_cloth(1e4, 0.5);
   const auto built = *build_cloth(desc);
-  LocalGlobal integrator(built.model, local_global(true, 1e-10));
+  LocalGlobal integrator(std::make_shared<const ClothModel>(built.model),
+                         local_global(true, 1e-10));
   NewtonSettings newton;
   newton.linear_solver = LinearSolverKind::direct;
   newton.tolerance = 1e-10;

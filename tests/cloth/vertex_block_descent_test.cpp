@@ -155,7 +155,8 @@ TEST(VertexBlockDescent, CheckingEveryFewSweepsStopsOnTheSameTest) {
 TEST(VertexBlockDescent, ColoursEveryFreeParticleOnce) {
   const auto built = build_cloth(bent_damped_cloth(100.0));
   ASSERT_TRUE(built);
-  const VertexBlockDescent integrator(built->model, VbdSettings{});
+  const VertexBlockDescent integrator(std::make_shared<const ClothModel>(built->model),
+                                      VbdSettings{});
   EXPECT_TRUE(is_valid_coloring(integrator.coloring(), cloth_conflict_edges(built->model)));
 }
 

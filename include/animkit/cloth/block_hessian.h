@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "animkit/cloth/cloth_model.h"
-#include "animkit/cloth/energy_term.h"
 #include "animkit/cloth/element_schedule.h"
+#include "animkit/cloth/energy_term.h"
 
 namespace animkit {
 
@@ -22,7 +22,7 @@ struct BlockHessian {
   /// terms. Their diagonal blocks are also added into `diagonal`, which is all preconditioners
   /// see of them; the products, and so CG's answer, include them all.
   std::vector<HessianBlock> extra;
-  ElementSchedule springs;                ///< the model's springs, for the products
+  ElementSchedule springs;  ///< the model's springs, for the products
 
   explicit BlockHessian(const ClothModel& model)
       : diagonal(model.particle_count()),

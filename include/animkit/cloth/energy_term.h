@@ -27,7 +27,19 @@ class EnergyTerm {
   /// Called at the start of every substep, from x_n over h, before any evaluation (e.g. to
   /// gather contact pairs or freeze an axis).
   virtual void prepare(const ClothState& /*state*/, double /*h*/) {}
-  /// E(x).
+  /// Called at every new iterate x of the minimization (the starting point, then each
+  /// accepted step) before g's gradient and Hessian are taken there: e.g. to gather the contact
+  /// pairs close to x.
+  virtual void update(const Eigen::VectorXd& /*x*/) {}
+  /// The largest fraction t in (0, 1] of `step` such that every point x + s step, s in [0, t],
+  /// is admissible for this term (e.g. intersection-free, by conservative continuous collision
+  /// detection); the line search never tries a longer step. Called once per iteration before
+  /// the line search: the term may then prepare to evaluate anywhere on that segment (e.g.
+  /// gather the pairs the motion sweeps past). Every term without a barrier admits any step.
+  virtual double max_step(const Eigen::VectorXd& /*x*/, const Eigen::VectorXd& /*step*/) {
+    return 1.0;
+  }
+  /// E(x); +infinity where x is not admissible.
   virtual double value(const Eigen::VectorXd& x) const = 0;
   /// E(x + step) - E(x). The line search compares differences; the default subtracts two
   /// values (and allocates), which loses small decreases when E is large: override it with a

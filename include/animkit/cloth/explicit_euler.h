@@ -2,6 +2,7 @@
 // Explicit (symplectic) Euler, the lab's starting point (SPEC.md section 4): per substep of
 // length h, v += h a(x, v), then x += h v. The lab runs 1000 substeps per frame to stay stable.
 #include <Eigen/Core>
+#include <memory>
 
 #include "animkit/cloth/cloth_model.h"
 #include "animkit/cloth/integrator.h"
@@ -14,7 +15,7 @@ void cloth_forces(const ClothModel& model, const Eigen::VectorXd& positions,
 
 class ExplicitEuler final : public ClothIntegrator {
  public:
-  explicit ExplicitEuler(const ClothModel& model);
+  explicit ExplicitEuler(std::shared_ptr<const ClothModel> model);
 
   /// One substep of h, from `state` into `state`. `external_forces` (3N, may be null) are added
   /// to the forces.
@@ -22,6 +23,8 @@ class ExplicitEuler final : public ClothIntegrator {
             const Eigen::VectorXd* external_forces = nullptr) override;
 
  private:
+  // Shared and immutable: the reference below stays valid however this integrator moves.
+  std::shared_ptr<const ClothModel> model_owner_;
   const ClothModel& model_;
   Eigen::VectorXd forces_;
 };

@@ -25,7 +25,7 @@ namespace animkit {
 /// factorization; Eigen still allocates O(N) scratch in each numeric factorization.
 class ImplicitEuler final : public ClothIntegrator {
  public:
-  ImplicitEuler(const ClothModel& model, const NewtonSettings& options);
+  ImplicitEuler(std::shared_ptr<const ClothModel> model, const NewtonSettings& options);
   ~ImplicitEuler() override;
 
   /// One step of h > 0 from `state` into `state`; adds its numbers to `report`.
@@ -37,8 +37,20 @@ class ImplicitEuler final : public ClothIntegrator {
 
  private:
   struct DirectSolver;
+  // The stages of a substep, in order (see step()).
+  double start_substep(const ClothState& state, double h, const Eigen::VectorXd* external_forces,
+                       StepReport& report);
+  double newton_direction(double gradient_norm, double relative_gradient, IterationRecord& record,
+                          StepReport& report);
   bool solve_newton_system(double relative_gradient, IterationRecord& record);
+  double step_bound(StepReport& report);
+  std::optional<double> line_search(double slope, double bound, IterationRecord& record,
+                                    StepReport& report);
+  void extend_projected_step(double& decrease, double& alpha);
+  double accept_step(StepReport& report);
 
+  // Shared and immutable: the reference below stays valid however this integrator moves.
+  std::shared_ptr<const ClothModel> model_owner_;
   const ClothModel& model_;
   NewtonSettings options_;
   IncrementalPotential potential_;

@@ -23,8 +23,8 @@
 
 #include "animkit/cloth/block_hessian.h"
 #include "animkit/cloth/cloth_model.h"
-#include "animkit/cloth/energy_term.h"
 #include "animkit/cloth/element_schedule.h"
+#include "animkit/cloth/energy_term.h"
 
 namespace animkit {
 
@@ -41,6 +41,15 @@ class IncrementalPotential {
   /// `external_forces` (3N, world units; may be null) act like gravity: constant over the step,
   /// they enter y as h^2 M^-1 f (e.g. the viewer's mouse spring, evaluated at x_n).
   void prepare(const ClothState& state, double h, const Eigen::VectorXd* external_forces = nullptr);
+
+  /// Tells every term that the minimization reached x (see EnergyTerm::update).
+  void update_terms(const Eigen::VectorXd& x);
+  /// The largest fraction in (0, 1] of `step` every term admits from x (EnergyTerm::max_step);
+  /// 1 without terms.
+  double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step);
+  /// Whether any term may bound the step (then the minimization starts from an admissible point
+  /// between x_n and y instead of from y itself).
+  bool has_terms() const { return !terms_.empty(); }
 
   /// The predicted positions y, where Newton starts (pinned particles: x_n).
   const Eigen::VectorXd& predicted() const { return y_; }

@@ -23,9 +23,9 @@ class ClothIntegrator {
   virtual bool add_energy_term(std::shared_ptr<EnergyTerm> /*term*/) { return false; }
 };
 
-/// The integrator `settings` selects, for `model` (kept by reference: it must outlive the
-/// integrator and stay where it is). The settings must be valid.
-std::unique_ptr<ClothIntegrator> make_integrator(const ClothModel& model,
+/// The integrator `settings` selects, for `model` (shared: many integrators and states may use
+/// one model, which never changes). The settings must be valid.
+std::unique_ptr<ClothIntegrator> make_integrator(std::shared_ptr<const ClothModel> model,
                                                  const IntegratorSettings& settings);
 
 }  // namespace animkit

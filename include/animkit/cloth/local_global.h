@@ -14,6 +14,7 @@
 // the plain method decreases g at every iteration. It stops on Newton's test
 // (|grad g| <= max(tolerance |grad g(y)|, IncrementalPotential::gradient_floor())).
 #include <Eigen/Core>
+#include <memory>
 
 #include "animkit/cloth/cloth_model.h"
 #include "animkit/cloth/incremental_potential.h"
@@ -29,7 +30,7 @@ namespace animkit {
 /// changes), and allocates nothing per iteration (unless recording iterations).
 class LocalGlobal final : public ClothIntegrator {
  public:
-  LocalGlobal(const ClothModel& model, const LocalGlobalSettings& settings);
+  LocalGlobal(std::shared_ptr<const ClothModel> model, const LocalGlobalSettings& settings);
 
   /// One substep of h > 0 from `state` into `state`; adds its numbers to `report` (the
   /// factorization's time, when h changed, goes to ms_hessian).
@@ -40,6 +41,8 @@ class LocalGlobal final : public ClothIntegrator {
   const LocalGlobalSystem& system() const { return system_; }
 
  private:
+  // Shared and immutable: the reference below stays valid however this integrator moves.
+  std::shared_ptr<const ClothModel> model_owner_;
   const ClothModel& model_;
   LocalGlobalSettings settings_;
   IncrementalPotential potential_;

@@ -38,8 +38,13 @@ struct StepReport {
   double energy = 0.0;    ///< total mechanical energy after the step (cloth_energy().total)
   double ms = 0.0;        ///< wall time of the whole step
   /// Time per stage (ms, summed over substeps): gradient and objective evaluations, Hessian
-  /// assembly, linear solves, line search.
+  /// assembly, linear solves, line search; with energy terms also their per-iterate updates
+  /// (e.g. finding contact pairs) and step bounds (e.g. continuous collision detection).
   double ms_gradient = 0.0, ms_hessian = 0.0, ms_linear_solve = 0.0, ms_line_search = 0.0;
+  double ms_term_updates = 0.0, ms_step_bound = 0.0;
+  /// The smallest fraction of a Newton step (or of the move from x_n to y) the energy terms
+  /// admitted (EnergyTerm::max_step), 1 when none bounded a step.
+  double step_bound_min = 1.0;
   std::vector<IterationRecord> iterations;  ///< empty unless recording was asked for
 };
 

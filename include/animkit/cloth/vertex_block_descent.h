@@ -12,6 +12,7 @@
 // where springs are compressed or strongly nonlinear). Particles of one colour share no element,
 // so their updates are independent and the sweep's decrease of g is the sum of the local ones.
 // The stopping test is Newton's: |grad g| <= max(tolerance |grad g(y)|, gradient floor).
+#include <memory>
 #include <vector>
 
 #include "animkit/cloth/cloth_model.h"
@@ -33,7 +34,7 @@ namespace animkit {
 /// (1 without acceleration).
 class VertexBlockDescent final : public ClothIntegrator {
  public:
-  VertexBlockDescent(const ClothModel& model, const VbdSettings& options);
+  VertexBlockDescent(std::shared_ptr<const ClothModel> model, const VbdSettings& options);
 
   void step(ClothState& state, double h, StepReport& report,
             const Eigen::VectorXd* external_forces = nullptr) override;
@@ -56,6 +57,8 @@ class VertexBlockDescent final : public ClothIntegrator {
   double local_difference(int i, const Vec3& step) const;
   bool chebyshev(int iteration, double& omega, IterationRecord& record, StepReport& report);
 
+  // Shared and immutable: the reference below stays valid however this integrator moves.
+  std::shared_ptr<const ClothModel> model_owner_;
   const ClothModel& model_;
   VbdSettings options_;
   IncrementalPotential potential_;
