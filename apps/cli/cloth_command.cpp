@@ -167,28 +167,24 @@ int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
   }
 
   const ClothState rest = sim->state();  // for the OBJ: the mesh as it starts
-  std::vector<StepReport> steps;
-  steps.reserve(static_cast<std::size_t>(args.frames));
   ProgressLine progress(args.frames);
-  std::optional<std::string> divergence;
-  for (int frame = 1; frame <= args.frames; ++frame) {
-    auto report = sim->step(args.dt);
-    if (!report) {
-      divergence = report.error().message;
-      break;
-    }
-    steps.push_back(std::move(*report));
+  // Each frame: a point-cache frame, a video frame, the progress line.
+  const auto record_frame = [&](int frame, const ClothSimulator& s,
+                                const StepReport& step) -> Result<void> {
     if (cache) {
-      if (auto ok = cache->add_frame(sim->state().positions); !ok)
-        return report_error(ok.error().message);
+      if (auto ok = cache->add_frame(s.state().positions); !ok) return ok;
     }
     if (pictures->take_video_frame()) {
       describe_state();
-      if (auto ok = pictures->add_video_frame(picture, camera); !ok)
-        return report_error(ok.error().message);
+      if (auto ok = pictures->add_video_frame(picture, camera); !ok) return ok;
     }
-    progress.update(frame, steps.back().ms);
-  }
+    progress.update(frame, step.ms);
+    return {};
+  };
+  auto run = run_cloth(*sim, args.frames, args.dt, record_frame);
+  if (!run) return report_error(run.error().message);
+  const std::vector<StepReport>& steps = run->steps;
+  const std::optional<std::string>& divergence = run->divergence;
   progress.done();
 
   ClothRunInfo info{integrator_name,

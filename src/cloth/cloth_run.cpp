@@ -33,4 +33,22 @@ ClothRunSummary summarize(std::span<const StepReport> steps) {
   return s;
 }
 
+Result<ClothRun> run_cloth(ClothSimulator& sim, int frames, double dt,
+                           const ClothFrameCallback& on_frame) {
+  ClothRun run;
+  run.steps.reserve(static_cast<std::size_t>(std::max(frames, 0)));
+  for (int frame = 1; frame <= frames; ++frame) {
+    auto report = sim.step(dt);
+    if (!report) {
+      run.divergence = report.error().message;
+      break;
+    }
+    run.steps.push_back(std::move(*report));
+    if (on_frame) {
+      if (auto ok = on_frame(frame, sim, run.steps.back()); !ok) return fail(ok.error().message);
+    }
+  }
+  return run;
+}
+
 }  // namespace animkit
