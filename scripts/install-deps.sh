@@ -23,6 +23,10 @@ packages=(
   ffmpeg xvfb xauth
   # The SVG tests check drawing.svg with a real XML parser (xmllint).
   libxml2-utils
+  # Contact tests and benchmarks only: CGAL's exact triangle intersection tests audit every
+  # frame (code independent of the solver's), and Bullet's soft body is the drape benchmark's
+  # point of comparison. The library itself uses neither.
+  libcgal-dev libbullet-dev
 )
 if [ "${1:-}" = "--fuzz" ]; then
   packages=(clang-16 libclang-rt-16-dev)
