@@ -1,0 +1,98 @@
+#include "contact_pair.h"
+
+#include <algorithm>
+#include <cassert>
+#include <limits>
+
+#include "animkit/collision/distance_type.h"
+#include "animkit/collision/edge_edge_mollifier.h"
+#include "animkit/collision/psd_projection.h"
+
+namespace animkit {
+
+namespace {
+
+StencilDerivatives<4> distance_derivatives(const ContactPair& pair, const std::array<Vec3, 4>& p,
+                                           double ground) {
+  switch (pair.kind) {
+    case ContactKind::point_triangle:
+      return point_triangle_distance_squared_derivatives(
+          p[0], p[1], p[2], p[3], point_triangle_distance_type(p[0], p[1], p[2], p[3]));
+    case ContactKind::edge_edge:
+      return edge_edge_distance_squared_derivatives(
+          p[0], p[1], p[2], p[3], edge_edge_distance_type(p[0], p[1], p[2], p[3]));
+    case ContactKind::ground: {
+      // d = (y - height)^2: only the particle's y enters.
+      StencilDerivatives<4> d;
+      const double gap = p[0].y() - ground;
+      d.value = gap * gap;
+      d.gradient[1] = 2.0 * gap;
+      d.hessian(1, 1) = 2.0;
+      return d;
+    }
+  }
+  assert(false && "unknown contact kind");
+  return {};
+}
+
+}  // namespace
+
+double contact_distance_squared(const ContactPair& pair, const std::array<Vec3, 4>& p,
+                                double ground) {
+  switch (pair.kind) {
+    case ContactKind::point_triangle:
+      return point_triangle_distance_squared(p[0], p[1], p[2], p[3]);
+    case ContactKind::edge_edge:
+      return edge_edge_distance_squared(p[0], p[1], p[2], p[3]);
+    case ContactKind::ground: {
+      const double gap = p[0].y() - ground;
+      // Below the plane counts as contact (0), not as the mirrored distance above it.
+      return gap > 0.0 ? gap * gap : 0.0;
+    }
+  }
+  assert(false && "unknown contact kind");
+  return 0.0;
+}
+
+double contact_barrier(const ContactPair& pair, const std::array<Vec3, 4>& p, double ground,
+                       const LogBarrier& barrier) {
+  const double d = contact_distance_squared(pair, p, ground);
+  if (!(d > 0.0)) return std::numeric_limits<double>::infinity();
+  if (d >= barrier.dhat()) return 0.0;
+  const double b = barrier.value(d);
+  if (pair.kind != ContactKind::edge_edge) return b;
+  return b * edge_edge_mollifier(p[0], p[1], p[2], p[3], pair.mollifier_threshold);
+}
+
+StencilDerivatives<4> contact_barrier_derivatives(const ContactPair& pair,
+                                                  const std::array<Vec3, 4>& p, double ground,
+                                                  const LogBarrier& barrier, bool project) {
+  StencilDerivatives<4> out;
+  const StencilDerivatives<4> d = distance_derivatives(pair, p, ground);
+  assert(d.value > 0.0 && "a contact pair's derivatives need a positive distance");
+  if (!(d.value < barrier.dhat())) return out;  // inactive: all zero
+  const double b = barrier.value(d.value);
+  const double b1 = barrier.first_derivative(d.value);
+  const double b2 = barrier.second_derivative(d.value);
+  out.value = b;
+  out.gradient = b1 * d.gradient;
+  out.hessian = b2 * d.gradient * d.gradient.transpose() + b1 * d.hessian;
+  if (pair.kind == ContactKind::ground) {
+    // One coordinate: projecting onto the PSD cone is clamping it.
+    if (project) out.hessian(1, 1) = std::max(out.hessian(1, 1), 0.0);
+    return out;
+  }
+  if (pair.kind == ContactKind::edge_edge) {
+    const StencilDerivatives<4> m =
+        edge_edge_mollifier_derivatives(p[0], p[1], p[2], p[3], pair.mollifier_threshold);
+    out.hessian = m.value * out.hessian +
+                  b1 * (m.gradient * d.gradient.transpose() + d.gradient * m.gradient.transpose()) +
+                  b * m.hessian;
+    out.gradient = m.value * out.gradient + b * m.gradient;
+    out.value = m.value * b;
+  }
+  if (project) out.hessian = project_to_psd(out.hessian);
+  return out;
+}
+
+}  // namespace animkit

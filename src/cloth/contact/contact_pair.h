@@ -1,0 +1,51 @@
+#pragma once
+// One contact pair's barrier, kappa b(d(x)) (IPC, Li et al. 2020, eq. 6 and section 4): its
+// value, gradient and PSD-projected Hessian in the pair's (up to) four vertices.
+//   point-triangle  d = the classified point-triangle squared distance (distance_type.h)
+//   edge-edge       d = the classified edge-edge squared distance, times IPC's mollifier m
+//                   (edge_edge_mollifier.h), which fades the pair out as the edges turn
+//                   parallel, where d is not smooth: the energy is m(x) b(d(x))
+//   ground          d = (y - height)^2 for one particle above the plane y = height
+// Chain rule: grad (m b) = m b' grad d + b grad m; hess = m (b'' grad d grad d^T + b' hess d)
+// + b' (grad m grad d^T + grad d grad m^T) + b hess m; then projected onto the PSD cone (as
+// IPC does for every pair) so Newton's direction is a descent direction.
+#include <array>
+#include <cstdint>
+
+#include "animkit/collision/barrier.h"
+#include "animkit/collision/distance.h"
+#include "animkit/core/types.h"
+
+namespace animkit {
+
+enum class ContactKind : std::uint8_t { point_triangle, edge_edge, ground };
+
+/// Vertices in the contact's index space: the cloth's particles [0, N), then the obstacles'
+/// vertices. point_triangle: (p, a, b, c); edge_edge: (a0, a1, b0, b1); ground: (p, -1, -1, -1).
+struct ContactPair {
+  ContactKind kind = ContactKind::point_triangle;
+  std::array<int, 4> vertices{-1, -1, -1, -1};
+  double mollifier_threshold = 0.0;  ///< edge_edge: eps_x (length^4), from rest lengths
+
+  int vertex_count() const { return kind == ContactKind::ground ? 1 : 4; }
+  bool operator==(const ContactPair&) const = default;
+};
+
+/// The pair's squared distance at positions p (p[i] the position of vertices[i]); `ground`
+/// is the plane's height. For edge-edge pairs this is the unmollified distance.
+double contact_distance_squared(const ContactPair& pair, const std::array<Vec3, 4>& p,
+                                double ground);
+
+/// b(d) times the mollifier (edge-edge), without kappa; +infinity at or past contact (d <= 0),
+/// 0 at or beyond dhat.
+double contact_barrier(const ContactPair& pair, const std::array<Vec3, 4>& p, double ground,
+                       const LogBarrier& barrier);
+
+/// The barrier (as contact_barrier) with its gradient and Hessian in the pair's vertices (rows
+/// of unused vertices zero), the Hessian projected onto the PSD cone unless `project` is
+/// false (for tests against finite differences). The pair must be at a positive distance.
+StencilDerivatives<4> contact_barrier_derivatives(const ContactPair& pair,
+                                                  const std::array<Vec3, 4>& p, double ground,
+                                                  const LogBarrier& barrier, bool project = true);
+
+}  // namespace animkit
