@@ -13,9 +13,11 @@ namespace animkit {
 
 namespace {
 
+// Quiet comparisons (std::isgreater, ...): `value > 0` on a NaN raises FE_INVALID, which the
+// tests trap, and a NaN is exactly what validation must report rather than trip over.
 std::optional<Error> check_size(const std::string& what, double value) {
-  if (!(value > 0.0)) return Error{what + " must be > 0, got " + format_number(value)};
-  if (!(value <= kMaxColliderSize)) {
+  if (!std::isgreater(value, 0.0)) return Error{what + " must be > 0, got " + format_number(value)};
+  if (!std::islessequal(value, kMaxColliderSize)) {
     return Error{what + " must be at most " + format_number(kMaxColliderSize) + ", got " +
                  format_number(value)};
   }
@@ -58,7 +60,7 @@ std::optional<Error> check_name(const std::string& name) {
 std::optional<Error> first_problem(const ColliderDesc& d) {
   if (auto e = std::visit([](const auto& s) { return check_shape(s); }, d.shape)) return e;
   if (auto e = validate_motion(d.motion)) return e;
-  if (!(d.friction >= 0.0) || !std::isfinite(d.friction)) {
+  if (!std::isfinite(d.friction) || d.friction < 0.0) {
     return Error{"friction must be finite and >= 0, got " + format_number(d.friction)};
   }
   if (d.tessellation < kMinTessellation || d.tessellation > kMaxTessellation) {
