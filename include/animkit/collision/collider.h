@@ -24,7 +24,7 @@ struct ColliderDesc {
   /// finite and >= 0 (0: frictionless), default 0.3.
   double friction = 0.3;
   /// Surface level for collider_surface(), in [kMinTessellation, kMaxTessellation], default 3
-  /// (a sphere of 1280 triangles, 1.5 % short of the true volume).
+  /// (a sphere of 1280 triangles, 0.9 % short of the true volume).
   int tessellation = 3;
 
   /// The first problem, prefixed with the collider's name ("collider 'ball': radius must be
