@@ -53,7 +53,8 @@ class Collider {
   const std::shared_ptr<const ColliderModel>& shared_model() const { return model_; }
   const std::string& name() const { return model_->desc.name; }
   double friction() const { return model_->desc.friction; }
-  /// A plane: contact takes it as the half-space below it, not as its drawn square.
+  /// A plane: contact takes it as the half-space below it, not as its drawn square. Its
+  /// boundary passes through pose().position with unit normal pose().rotation * +y.
   bool is_half_space() const;
 
   /// Moves the collider to its pose at time t (s, finite) and updates the world vertices.
