@@ -53,40 +53,38 @@ bool in_triangle(int v, const std::array<int, 3>& t) {
   return v == t[0] || v == t[1] || v == t[2];
 }
 
-}  // namespace
+using broad_phase_detail::Box;
+using broad_phase_detail::CellEntry;
 
-Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCandidates& out,
-                              const MeshMotion* collider) {
-  out.clear();
-  if (!(std::isfinite(radius) && radius >= 0.0)) {
-    return fail("broad phase radius must be finite and >= 0, got " + format_number(radius));
-  }
-  if (auto error = check_motion(mesh, "mesh")) return std::unexpected(*error);
-  if (collider != nullptr) {
-    if (auto error = check_motion(*collider, "collider")) return std::unexpected(*error);
-  }
-
-  // Global primitive indices: [offsets[k], offsets[k + 1]) are the primitives of kind k.
-  const CollisionMesh empty;
-  const CollisionMesh& other = collider != nullptr ? collider->mesh : empty;
-  const std::array<int, 6> counts = {mesh.mesh.vertex_count,
-                                     static_cast<int>(mesh.mesh.edges.size()),
-                                     static_cast<int>(mesh.mesh.triangles.size()),
-                                     other.vertex_count,
-                                     static_cast<int>(other.edges.size()),
-                                     static_cast<int>(other.triangles.size())};
+// Global primitive indices: [offsets[k], offsets[k + 1]) are the primitives of kind k.
+struct PrimitiveRanges {
+  std::array<int, 6> counts{};
   std::array<int, 7> offsets{};
-  for (int k = 0; k < 6; ++k) offsets[k + 1] = offsets[k] + counts[k];
-  const auto kind_of = [&](int primitive) {
+
+  PrimitiveRanges(const CollisionMesh& mesh, const CollisionMesh* collider) {
+    counts = {mesh.vertex_count, static_cast<int>(mesh.edges.size()),
+              static_cast<int>(mesh.triangles.size())};
+    if (collider != nullptr) {
+      counts[3] = collider->vertex_count;
+      counts[4] = static_cast<int>(collider->edges.size());
+      counts[5] = static_cast<int>(collider->triangles.size());
+    }
+    for (int k = 0; k < 6; ++k) offsets[k + 1] = offsets[k] + counts[k];
+  }
+  int total() const { return offsets[6]; }
+  int kind_of(int primitive) const {
     int k = 0;
     while (primitive >= offsets[k + 1]) ++k;
     return k;
-  };
+  }
+};
 
-  // Swept boxes, inflated by radius / 2 each: boxes overlap when the primitives come closer
-  // than the radius (per axis, so certainly in distance).
-  boxes_.resize(offsets[6]);
-  const auto box_of = [&](const MeshMotion& m, const int* vertices, int n, Box& box) {
+// Stage 1: swept boxes, inflated by radius / 2 each, so boxes overlap when the primitives come
+// closer than the radius (per axis, so certainly in distance).
+void build_boxes(const MeshMotion& mesh, const MeshMotion* collider, double radius,
+                 const PrimitiveRanges& ranges, std::vector<Box>& boxes) {
+  boxes.resize(ranges.total());
+  const auto box_of = [radius](const MeshMotion& m, const int* vertices, int n, Box& box) {
     box.lo = box.hi = m.start.segment<3>(3 * vertices[0]);
     for (int i = 0; i < n; ++i) {
       for (const Eigen::VectorXd* x : {&m.start, &m.end}) {
@@ -102,97 +100,119 @@ Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCand
     const MeshMotion* m = side == 0 ? &mesh : collider;
     if (m == nullptr) continue;
     const int base = 3 * side;
-    for (int v = 0; v < counts[base]; ++v) box_of(*m, &v, 1, boxes_[offsets[base] + v]);
-    for (int e = 0; e < counts[base + 1]; ++e) {
-      box_of(*m, m->mesh.edges[e].data(), 2, boxes_[offsets[base + 1] + e]);
+    for (int v = 0; v < ranges.counts[base]; ++v) {
+      box_of(*m, &v, 1, boxes[ranges.offsets[base] + v]);
     }
-    for (int t = 0; t < counts[base + 2]; ++t) {
-      box_of(*m, m->mesh.triangles[t].data(), 3, boxes_[offsets[base + 2] + t]);
+    for (int e = 0; e < ranges.counts[base + 1]; ++e) {
+      box_of(*m, m->mesh.edges[e].data(), 2, boxes[ranges.offsets[base + 1] + e]);
+    }
+    for (int t = 0; t < ranges.counts[base + 2]; ++t) {
+      box_of(*m, m->mesh.triangles[t].data(), 3, boxes[ranges.offsets[base + 2] + t]);
     }
   }
-  if (boxes_.empty()) return {};
+}
 
-  // The grid: origin at the lower corner of everything, cell size from the mean box size.
-  Vec3 origin = boxes_[0].lo, top = boxes_[0].hi;
-  double mean_size = 0.0;
-  for (const Box& box : boxes_) {
-    origin = origin.cwiseMin(box.lo);
-    top = top.cwiseMax(box.hi);
-    mean_size += (box.hi - box.lo).maxCoeff();
-  }
-  mean_size /= static_cast<double>(boxes_.size());
-  const double extent = (top - origin).maxCoeff();
-  double cell = mean_size > 0.0 ? mean_size : (extent > 0.0 ? extent : 1.0);
-  constexpr double kMaxCellsPerAxis = 1 << 20;  // keeps the 3D cell key below 2^60
-  while (extent / cell > kMaxCellsPerAxis) cell *= 2.0;
-  std::array<std::int64_t, 3> dims{};
-  const auto cell_coordinate = [&](double x, int axis) {
+// Stage 2: the uniform grid. Origin at the lower corner of all boxes; cell size the mean box
+// size, doubled while a cell key would need more than 20 bits per axis or the boxes would fill
+// more than 16 cells each on average (which bounds the work by the number of boxes).
+struct HashGrid {
+  Vec3 origin = Vec3::Zero();
+  double cell = 1.0;
+  std::array<std::int64_t, 3> dims{1, 1, 1};
+
+  std::int64_t coordinate(double x, int axis) const {
     const auto c = static_cast<std::int64_t>(std::floor((x - origin[axis]) / cell));
     return std::clamp<std::int64_t>(c, 0, dims[axis] - 1);
-  };
-  const auto key = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+  }
+  std::uint64_t key(std::int64_t i, std::int64_t j, std::int64_t k) const {
     return static_cast<std::uint64_t>((i * dims[1] + j) * dims[2] + k);
-  };
-  // Coarsen while the boxes would fill more than 16 cells each on average.
-  const std::uint64_t budget = 16 * boxes_.size() + 64;
-  while (true) {
+  }
+  std::uint64_t key(const Vec3& p) const {
+    return key(coordinate(p.x(), 0), coordinate(p.y(), 1), coordinate(p.z(), 2));
+  }
+  std::uint64_t cells_of(const Box& box) const {
+    std::uint64_t n = 1;
     for (int a = 0; a < 3; ++a) {
-      dims[a] = static_cast<std::int64_t>(std::floor((top[a] - origin[a]) / cell)) + 1;
+      n *= static_cast<std::uint64_t>(coordinate(box.hi[a], a) - coordinate(box.lo[a], a) + 1);
     }
-    std::uint64_t total = 0;
-    for (const Box& box : boxes_) {
-      std::uint64_t n = 1;
-      for (int a = 0; a < 3; ++a) {
-        n *= static_cast<std::uint64_t>(cell_coordinate(box.hi[a], a) -
-                                        cell_coordinate(box.lo[a], a) + 1);
-      }
-      total += n;
-      if (total > budget) break;
-    }
-    if (total <= budget) break;
-    cell *= 2.0;
+    return n;
   }
 
-  entries_.clear();
-  for (int p = 0; p < static_cast<int>(boxes_.size()); ++p) {
-    const Box& box = boxes_[p];
-    for (auto i = cell_coordinate(box.lo.x(), 0); i <= cell_coordinate(box.hi.x(), 0); ++i) {
-      for (auto j = cell_coordinate(box.lo.y(), 1); j <= cell_coordinate(box.hi.y(), 1); ++j) {
-        for (auto k = cell_coordinate(box.lo.z(), 2); k <= cell_coordinate(box.hi.z(), 2); ++k) {
-          entries_.push_back({key(i, j, k), p});
+  static HashGrid fit(const std::vector<Box>& boxes) {
+    HashGrid grid;
+    grid.origin = boxes[0].lo;
+    Vec3 top = boxes[0].hi;
+    double mean_size = 0.0;
+    for (const Box& box : boxes) {
+      grid.origin = grid.origin.cwiseMin(box.lo);
+      top = top.cwiseMax(box.hi);
+      mean_size += (box.hi - box.lo).maxCoeff();
+    }
+    mean_size /= static_cast<double>(boxes.size());
+    const double extent = (top - grid.origin).maxCoeff();
+    grid.cell = mean_size > 0.0 ? mean_size : (extent > 0.0 ? extent : 1.0);
+    constexpr double kMaxCellsPerAxis = 1 << 20;  // the 3D key stays below 2^61
+    while (extent / grid.cell > kMaxCellsPerAxis) grid.cell *= 2.0;
+    const std::uint64_t budget = 16 * boxes.size() + 64;
+    while (true) {
+      for (int a = 0; a < 3; ++a) {
+        grid.dims[a] =
+            static_cast<std::int64_t>(std::floor((top[a] - grid.origin[a]) / grid.cell)) + 1;
+      }
+      std::uint64_t total = 0;
+      for (const Box& box : boxes) {
+        total += grid.cells_of(box);
+        if (total > budget) break;
+      }
+      if (total <= budget) return grid;
+      grid.cell *= 2.0;
+    }
+  }
+};
+
+// Stage 3: every box in every cell it overlaps, sorted by (cell, primitive).
+void fill_cells(const HashGrid& grid, const std::vector<Box>& boxes,
+                std::vector<CellEntry>& entries) {
+  entries.clear();
+  for (int p = 0; p < static_cast<int>(boxes.size()); ++p) {
+    const Box& box = boxes[p];
+    for (auto i = grid.coordinate(box.lo.x(), 0); i <= grid.coordinate(box.hi.x(), 0); ++i) {
+      for (auto j = grid.coordinate(box.lo.y(), 1); j <= grid.coordinate(box.hi.y(), 1); ++j) {
+        for (auto k = grid.coordinate(box.lo.z(), 2); k <= grid.coordinate(box.hi.z(), 2); ++k) {
+          entries.push_back({grid.key(i, j, k), p});
         }
       }
     }
   }
-  std::sort(entries_.begin(), entries_.end());
+  std::sort(entries.begin(), entries.end());
+}
 
-  const CollisionMesh& self = mesh.mesh;
-  for (std::size_t begin = 0; begin < entries_.size();) {
+// Stage 4: the wanted pairs of primitives sharing a cell, with overlapping boxes, reported from
+// the cell of their intersection's lower corner only (that corner lies in both boxes, so exactly
+// one shared cell qualifies and no pair comes out twice).
+void collect_pairs(const HashGrid& grid, const std::vector<Box>& boxes,
+                   const std::vector<CellEntry>& entries, const PrimitiveRanges& ranges,
+                   const CollisionMesh& self, ContactCandidates& out) {
+  for (std::size_t begin = 0; begin < entries.size();) {
     std::size_t end = begin;
-    while (end < entries_.size() && entries_[end].cell == entries_[begin].cell) ++end;
+    while (end < entries.size() && entries[end].cell == entries[begin].cell) ++end;
     for (std::size_t i = begin; i < end; ++i) {
-      const int a = entries_[i].primitive, kind_a = kind_of(a);
+      const int a = entries[i].primitive, kind_a = ranges.kind_of(a);
       for (std::size_t j = i + 1; j < end; ++j) {
-        const int b = entries_[j].primitive, kind_b = kind_of(b);  // a < b, kind_a <= kind_b
+        const int b = entries[j].primitive, kind_b = ranges.kind_of(b);  // a < b: kinds ordered
         const bool wanted = (kind_a == kVertex && kind_b == kTriangle) ||
                             (kind_a == kEdge && kind_b == kEdge) ||
                             (kind_a == kVertex && kind_b == kColliderTriangle) ||
                             (kind_a == kTriangle && kind_b == kColliderVertex) ||
                             (kind_a == kEdge && kind_b == kColliderEdge);
         if (!wanted) continue;
-        const Box &box_a = boxes_[a], &box_b = boxes_[b];
+        const Box &box_a = boxes[a], &box_b = boxes[b];
         if ((box_a.lo.array() > box_b.hi.array()).any() ||
-            (box_b.lo.array() > box_a.hi.array()).any()) {
+            (box_b.lo.array() > box_a.hi.array()).any() ||
+            grid.key(box_a.lo.cwiseMax(box_b.lo)) != entries[begin].cell) {
           continue;
         }
-        // Report from the cell of the intersection's lower corner only (it is in both boxes'
-        // cells, so exactly one shared cell qualifies).
-        const Vec3 corner = box_a.lo.cwiseMax(box_b.lo);
-        if (key(cell_coordinate(corner.x(), 0), cell_coordinate(corner.y(), 1),
-                cell_coordinate(corner.z(), 2)) != entries_[begin].cell) {
-          continue;
-        }
-        const int ia = a - offsets[kind_a], ib = b - offsets[kind_b];
+        const int ia = a - ranges.offsets[kind_a], ib = b - ranges.offsets[kind_b];
         if (kind_b == kTriangle) {
           if (!in_triangle(ia, self.triangles[ib])) out.vertex_triangle.push_back({ia, ib});
         } else if (kind_b == kEdge) {
@@ -208,6 +228,26 @@ Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCand
     }
     begin = end;
   }
+}
+
+}  // namespace
+
+Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCandidates& out,
+                              const MeshMotion* collider) {
+  out.clear();
+  if (!(std::isfinite(radius) && radius >= 0.0)) {
+    return fail("broad phase radius must be finite and >= 0, got " + format_number(radius));
+  }
+  if (auto error = check_motion(mesh, "mesh")) return std::unexpected(*error);
+  if (collider != nullptr) {
+    if (auto error = check_motion(*collider, "collider")) return std::unexpected(*error);
+  }
+  const PrimitiveRanges ranges(mesh.mesh, collider != nullptr ? &collider->mesh : nullptr);
+  build_boxes(mesh, collider, radius, ranges, boxes_);
+  if (boxes_.empty()) return {};
+  const HashGrid grid = HashGrid::fit(boxes_);
+  fill_cells(grid, boxes_, entries_);
+  collect_pairs(grid, boxes_, entries_, ranges, mesh.mesh, out);
   std::sort(out.vertex_triangle.begin(), out.vertex_triangle.end());
   std::sort(out.edge_edge.begin(), out.edge_edge.end());
   std::sort(out.vertex_collider_triangle.begin(), out.vertex_collider_triangle.end());

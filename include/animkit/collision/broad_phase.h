@@ -51,6 +51,19 @@ struct ContactCandidates {
   std::size_t size() const;
 };
 
+namespace broad_phase_detail {
+/// A primitive's swept, inflated box (world space).
+struct Box {
+  Vec3 lo, hi;
+};
+/// A primitive (global index over both meshes' vertices, edges, triangles) in a grid cell.
+struct CellEntry {
+  std::uint64_t cell;
+  int primitive;
+  auto operator<=>(const CellEntry&) const = default;
+};
+}  // namespace broad_phase_detail
+
 /// A mesh and its vertices' positions at the start and the end of a linear motion: 3 doubles per
 /// vertex (x0 y0 z0 x1 ...), world space. For one configuration pass the same vector twice.
 struct MeshMotion {
@@ -71,16 +84,8 @@ class BroadPhase {
                     const MeshMotion* collider = nullptr);
 
  private:
-  struct Box {
-    Vec3 lo, hi;
-  };
-  struct Entry {
-    std::uint64_t cell;
-    int primitive;
-    auto operator<=>(const Entry&) const = default;
-  };
-  std::vector<Box> boxes_;
-  std::vector<Entry> entries_;
+  std::vector<broad_phase_detail::Box> boxes_;
+  std::vector<broad_phase_detail::CellEntry> entries_;
 };
 
 }  // namespace animkit
