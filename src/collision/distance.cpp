@@ -28,7 +28,9 @@ void plane_form_derivatives(const Vec3& e, const Vec3& u, const Vec3& v, double&
   const Vec3 n = u.cross(v);
   const double s = e.dot(n);
   ReducedVector<3> grad_s;
-  grad_s << n, v.cross(e), e.cross(u);
+  grad_s.segment<3>(0) = n;
+  grad_s.segment<3>(3) = v.cross(e);
+  grad_s.segment<3>(6) = e.cross(u);
   ReducedMatrix<3> hess_s = ReducedMatrix<3>::Zero();
   hess_s.block<3, 3>(0, 3) = -cross_matrix(v);
   hess_s.block<3, 3>(0, 6) = cross_matrix(u);
@@ -98,8 +100,8 @@ StencilDerivatives<3> point_line_distance_squared_derivatives(const Vec3& p, con
   cross_squared_derivatives(e, u, n, grad_n, hess_n);
   const double d = u.squaredNorm();
   assert(d > 0.0 && "point-line needs a != b");
-  ReducedVector<2> grad_d;
-  grad_d << Vec3::Zero(), 2.0 * u;
+  ReducedVector<2> grad_d = ReducedVector<2>::Zero();
+  grad_d.segment<3>(3) = 2.0 * u;
   ReducedMatrix<2> hess_d = ReducedMatrix<2>::Zero();
   hess_d.bottomRightCorner<3, 3>().diagonal().setConstant(2.0);
   double f = 0.0;

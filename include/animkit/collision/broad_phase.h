@@ -1,0 +1,91 @@
+#pragma once
+// Broad phase of contact: the point-triangle and edge-edge pairs whose distance may fall below a
+// radius (IPC's dhat for the barrier, or dhat plus the step's motion for CCD; Li et al. 2020,
+// section 5), found with a uniform spatial hash (Teschner et al., "Optimized Spatial Hashing for
+// Collision Detection of Deformable Objects", VMV 2003).
+//
+// Each primitive gets an axis-aligned box around its positions at t = 0 and t = 1 (so it holds
+// the primitive over the whole linear motion), inflated by radius / 2: if two primitives come
+// closer than the radius, their boxes overlap. The boxes are entered in the cells of a uniform
+// grid (cell size: the primitives' mean box size, doubled while the boxes would fill more than
+// 16 cells each on average), the entries sorted by cell, and the pairs sharing a cell whose
+// boxes overlap reported from the one cell holding the lower corner of the boxes' intersection
+// (so once, without a global de-duplication). Cost: near linear in the number of primitives
+// plus candidates (a sort of the cell entries). Output sorted, so deterministic.
+//
+// Self pairs that share a vertex (a vertex and its own triangles, edges with a common end) are
+// never reported: their distance is zero by construction and IPC does not treat them as contact.
+#include <Eigen/Core>
+#include <compare>
+#include <cstdint>
+#include <vector>
+
+#include "animkit/collision/collision_mesh.h"
+#include "animkit/core/result.h"
+#include "animkit/core/types.h"
+
+namespace animkit {
+
+struct VertexTriangleCandidate {
+  int vertex = 0;
+  int triangle = 0;
+  auto operator<=>(const VertexTriangleCandidate&) const = default;
+};
+
+struct EdgeEdgeCandidate {
+  int edge_a = 0;  ///< edge index in the first mesh
+  int edge_b = 0;  ///< edge index in the second mesh (> edge_a for self pairs)
+  auto operator<=>(const EdgeEdgeCandidate&) const = default;
+};
+
+/// Candidate pairs, each list sorted. Indices are into CollisionMesh::edges / triangles and the
+/// vertices of the mesh named in the field.
+struct ContactCandidates {
+  std::vector<VertexTriangleCandidate> vertex_triangle;           ///< mesh vertex, mesh triangle
+  std::vector<EdgeEdgeCandidate> edge_edge;                       ///< mesh edge, mesh edge
+  std::vector<VertexTriangleCandidate> vertex_collider_triangle;  ///< mesh vertex, collider tri
+  std::vector<VertexTriangleCandidate> collider_vertex_triangle;  ///< collider vertex, mesh tri
+  std::vector<EdgeEdgeCandidate> edge_collider_edge;              ///< mesh edge, collider edge
+
+  void clear();
+  std::size_t size() const;
+};
+
+namespace broad_phase_detail {
+/// A primitive's swept, inflated box (world space).
+struct Box {
+  Vec3 lo, hi;
+};
+/// A primitive (global index over both meshes' vertices, edges, triangles) in a grid cell.
+struct CellEntry {
+  std::uint64_t cell;
+  int primitive;
+  auto operator<=>(const CellEntry&) const = default;
+};
+}  // namespace broad_phase_detail
+
+/// A mesh and its vertices' positions at the start and the end of a linear motion: 3 doubles per
+/// vertex (x0 y0 z0 x1 ...), world space. For one configuration pass the same vector twice.
+struct MeshMotion {
+  const CollisionMesh& mesh;
+  const Eigen::VectorXd& start;
+  const Eigen::VectorXd& end;
+};
+
+/// The spatial hash. Keeps its work vectors between calls: reuse one object per simulation so a
+/// query allocates nothing once the vectors have grown to the scene's size.
+class BroadPhase {
+ public:
+  /// Fills `out` (cleared first) with the self pairs of `mesh` and, if `collider` is given, the
+  /// pairs between `mesh` and `collider` (none within the collider), that may come closer than
+  /// `radius` (position units, finite, >= 0) anywhere along the motions. Fails on a negative or
+  /// non-finite radius, position vectors of the wrong size or a non-finite coordinate.
+  Result<void> find(const MeshMotion& mesh, double radius, ContactCandidates& out,
+                    const MeshMotion* collider = nullptr);
+
+ private:
+  std::vector<broad_phase_detail::Box> boxes_;
+  std::vector<broad_phase_detail::CellEntry> entries_;
+};
+
+}  // namespace animkit

@@ -1,0 +1,259 @@
+#include "animkit/collision/broad_phase.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "animkit/core/validation.h"
+
+namespace animkit {
+
+void ContactCandidates::clear() {
+  vertex_triangle.clear();
+  edge_edge.clear();
+  vertex_collider_triangle.clear();
+  collider_vertex_triangle.clear();
+  edge_collider_edge.clear();
+}
+
+std::size_t ContactCandidates::size() const {
+  return vertex_triangle.size() + edge_edge.size() + vertex_collider_triangle.size() +
+         collider_vertex_triangle.size() + edge_collider_edge.size();
+}
+
+namespace {
+
+// Primitive kinds, in the order of their global indices.
+enum Kind { kVertex, kEdge, kTriangle, kColliderVertex, kColliderEdge, kColliderTriangle };
+
+std::optional<Error> check_motion(const MeshMotion& motion, const char* name) {
+  const Eigen::Index expected = 3 * Eigen::Index{motion.mesh.vertex_count};
+  for (const Eigen::VectorXd* positions : {&motion.start, &motion.end}) {
+    if (positions->size() != expected) {
+      return Error{std::string(name) + " positions have " + std::to_string(positions->size()) +
+                   " entries, expected " + std::to_string(expected) + " (3 per vertex)"};
+    }
+    for (Eigen::Index i = 0; i < positions->size(); ++i) {
+      if (!std::isfinite((*positions)[i])) {
+        return Error{std::string(name) + " vertex " + std::to_string(i / 3) +
+                     " has a non-finite coordinate"};
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+bool shares_vertex(const std::array<int, 2>& e, const std::array<int, 2>& f) {
+  return e[0] == f[0] || e[0] == f[1] || e[1] == f[0] || e[1] == f[1];
+}
+
+bool in_triangle(int v, const std::array<int, 3>& t) {
+  return v == t[0] || v == t[1] || v == t[2];
+}
+
+using broad_phase_detail::Box;
+using broad_phase_detail::CellEntry;
+
+// Global primitive indices: [offsets[k], offsets[k + 1]) are the primitives of kind k.
+struct PrimitiveRanges {
+  std::array<int, 6> counts{};
+  std::array<int, 7> offsets{};
+
+  PrimitiveRanges(const CollisionMesh& mesh, const CollisionMesh* collider) {
+    counts = {mesh.vertex_count, static_cast<int>(mesh.edges.size()),
+              static_cast<int>(mesh.triangles.size())};
+    if (collider != nullptr) {
+      counts[3] = collider->vertex_count;
+      counts[4] = static_cast<int>(collider->edges.size());
+      counts[5] = static_cast<int>(collider->triangles.size());
+    }
+    for (int k = 0; k < 6; ++k) offsets[k + 1] = offsets[k] + counts[k];
+  }
+  int total() const { return offsets[6]; }
+  int kind_of(int primitive) const {
+    int k = 0;
+    while (primitive >= offsets[k + 1]) ++k;
+    return k;
+  }
+};
+
+// Stage 1: swept boxes, inflated by radius / 2 each, so boxes overlap when the primitives come
+// closer than the radius (per axis, so certainly in distance).
+void build_boxes(const MeshMotion& mesh, const MeshMotion* collider, double radius,
+                 const PrimitiveRanges& ranges, std::vector<Box>& boxes) {
+  boxes.resize(ranges.total());
+  const auto box_of = [radius](const MeshMotion& m, const int* vertices, int n, Box& box) {
+    box.lo = box.hi = m.start.segment<3>(3 * vertices[0]);
+    for (int i = 0; i < n; ++i) {
+      for (const Eigen::VectorXd* x : {&m.start, &m.end}) {
+        const Vec3 p = x->segment<3>(3 * vertices[i]);
+        box.lo = box.lo.cwiseMin(p);
+        box.hi = box.hi.cwiseMax(p);
+      }
+    }
+    box.lo.array() -= 0.5 * radius;
+    box.hi.array() += 0.5 * radius;
+  };
+  for (int side = 0; side < 2; ++side) {
+    const MeshMotion* m = side == 0 ? &mesh : collider;
+    if (m == nullptr) continue;
+    const int base = 3 * side;
+    for (int v = 0; v < ranges.counts[base]; ++v) {
+      box_of(*m, &v, 1, boxes[ranges.offsets[base] + v]);
+    }
+    for (int e = 0; e < ranges.counts[base + 1]; ++e) {
+      box_of(*m, m->mesh.edges[e].data(), 2, boxes[ranges.offsets[base + 1] + e]);
+    }
+    for (int t = 0; t < ranges.counts[base + 2]; ++t) {
+      box_of(*m, m->mesh.triangles[t].data(), 3, boxes[ranges.offsets[base + 2] + t]);
+    }
+  }
+}
+
+// Stage 2: the uniform grid. Origin at the lower corner of all boxes; cell size the mean box
+// size, doubled while a cell key would need more than 20 bits per axis or the boxes would fill
+// more than 16 cells each on average (which bounds the work by the number of boxes).
+struct HashGrid {
+  Vec3 origin = Vec3::Zero();
+  double cell = 1.0;
+  std::array<std::int64_t, 3> dims{1, 1, 1};
+
+  std::int64_t coordinate(double x, int axis) const {
+    const auto c = static_cast<std::int64_t>(std::floor((x - origin[axis]) / cell));
+    return std::clamp<std::int64_t>(c, 0, dims[axis] - 1);
+  }
+  std::uint64_t key(std::int64_t i, std::int64_t j, std::int64_t k) const {
+    return static_cast<std::uint64_t>((i * dims[1] + j) * dims[2] + k);
+  }
+  std::uint64_t key(const Vec3& p) const {
+    return key(coordinate(p.x(), 0), coordinate(p.y(), 1), coordinate(p.z(), 2));
+  }
+  std::uint64_t cells_of(const Box& box) const {
+    std::uint64_t n = 1;
+    for (int a = 0; a < 3; ++a) {
+      n *= static_cast<std::uint64_t>(coordinate(box.hi[a], a) - coordinate(box.lo[a], a) + 1);
+    }
+    return n;
+  }
+
+  static HashGrid fit(const std::vector<Box>& boxes) {
+    HashGrid grid;
+    grid.origin = boxes[0].lo;
+    Vec3 top = boxes[0].hi;
+    double mean_size = 0.0;
+    for (const Box& box : boxes) {
+      grid.origin = grid.origin.cwiseMin(box.lo);
+      top = top.cwiseMax(box.hi);
+      mean_size += (box.hi - box.lo).maxCoeff();
+    }
+    mean_size /= static_cast<double>(boxes.size());
+    const double extent = (top - grid.origin).maxCoeff();
+    grid.cell = mean_size > 0.0 ? mean_size : (extent > 0.0 ? extent : 1.0);
+    constexpr double kMaxCellsPerAxis = 1 << 20;  // the 3D key stays below 2^61
+    while (extent / grid.cell > kMaxCellsPerAxis) grid.cell *= 2.0;
+    const std::uint64_t budget = 16 * boxes.size() + 64;
+    while (true) {
+      for (int a = 0; a < 3; ++a) {
+        grid.dims[a] =
+            static_cast<std::int64_t>(std::floor((top[a] - grid.origin[a]) / grid.cell)) + 1;
+      }
+      std::uint64_t total = 0;
+      for (const Box& box : boxes) {
+        total += grid.cells_of(box);
+        if (total > budget) break;
+      }
+      if (total <= budget) return grid;
+      grid.cell *= 2.0;
+    }
+  }
+};
+
+// Stage 3: every box in every cell it overlaps, sorted by (cell, primitive).
+void fill_cells(const HashGrid& grid, const std::vector<Box>& boxes,
+                std::vector<CellEntry>& entries) {
+  entries.clear();
+  for (int p = 0; p < static_cast<int>(boxes.size()); ++p) {
+    const Box& box = boxes[p];
+    for (auto i = grid.coordinate(box.lo.x(), 0); i <= grid.coordinate(box.hi.x(), 0); ++i) {
+      for (auto j = grid.coordinate(box.lo.y(), 1); j <= grid.coordinate(box.hi.y(), 1); ++j) {
+        for (auto k = grid.coordinate(box.lo.z(), 2); k <= grid.coordinate(box.hi.z(), 2); ++k) {
+          entries.push_back({grid.key(i, j, k), p});
+        }
+      }
+    }
+  }
+  std::sort(entries.begin(), entries.end());
+}
+
+// Stage 4: the wanted pairs of primitives sharing a cell, with overlapping boxes, reported from
+// the cell of their intersection's lower corner only (that corner lies in both boxes, so exactly
+// one shared cell qualifies and no pair comes out twice).
+void collect_pairs(const HashGrid& grid, const std::vector<Box>& boxes,
+                   const std::vector<CellEntry>& entries, const PrimitiveRanges& ranges,
+                   const CollisionMesh& self, ContactCandidates& out) {
+  for (std::size_t begin = 0; begin < entries.size();) {
+    std::size_t end = begin;
+    while (end < entries.size() && entries[end].cell == entries[begin].cell) ++end;
+    for (std::size_t i = begin; i < end; ++i) {
+      const int a = entries[i].primitive, kind_a = ranges.kind_of(a);
+      for (std::size_t j = i + 1; j < end; ++j) {
+        const int b = entries[j].primitive, kind_b = ranges.kind_of(b);  // a < b: kinds ordered
+        const bool wanted = (kind_a == kVertex && kind_b == kTriangle) ||
+                            (kind_a == kEdge && kind_b == kEdge) ||
+                            (kind_a == kVertex && kind_b == kColliderTriangle) ||
+                            (kind_a == kTriangle && kind_b == kColliderVertex) ||
+                            (kind_a == kEdge && kind_b == kColliderEdge);
+        if (!wanted) continue;
+        const Box &box_a = boxes[a], &box_b = boxes[b];
+        if ((box_a.lo.array() > box_b.hi.array()).any() ||
+            (box_b.lo.array() > box_a.hi.array()).any() ||
+            grid.key(box_a.lo.cwiseMax(box_b.lo)) != entries[begin].cell) {
+          continue;
+        }
+        const int ia = a - ranges.offsets[kind_a], ib = b - ranges.offsets[kind_b];
+        if (kind_b == kTriangle) {
+          if (!in_triangle(ia, self.triangles[ib])) out.vertex_triangle.push_back({ia, ib});
+        } else if (kind_b == kEdge) {
+          if (!shares_vertex(self.edges[ia], self.edges[ib])) out.edge_edge.push_back({ia, ib});
+        } else if (kind_b == kColliderTriangle) {
+          out.vertex_collider_triangle.push_back({ia, ib});
+        } else if (kind_b == kColliderVertex) {
+          out.collider_vertex_triangle.push_back({ib, ia});
+        } else {
+          out.edge_collider_edge.push_back({ia, ib});
+        }
+      }
+    }
+    begin = end;
+  }
+}
+
+}  // namespace
+
+Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCandidates& out,
+                              const MeshMotion* collider) {
+  out.clear();
+  if (!(std::isfinite(radius) && radius >= 0.0)) {
+    return fail("broad phase radius must be finite and >= 0, got " + format_number(radius));
+  }
+  if (auto error = check_motion(mesh, "mesh")) return std::unexpected(*error);
+  if (collider != nullptr) {
+    if (auto error = check_motion(*collider, "collider")) return std::unexpected(*error);
+  }
+  const PrimitiveRanges ranges(mesh.mesh, collider != nullptr ? &collider->mesh : nullptr);
+  build_boxes(mesh, collider, radius, ranges, boxes_);
+  if (boxes_.empty()) return {};
+  const HashGrid grid = HashGrid::fit(boxes_);
+  fill_cells(grid, boxes_, entries_);
+  collect_pairs(grid, boxes_, entries_, ranges, mesh.mesh, out);
+  std::sort(out.vertex_triangle.begin(), out.vertex_triangle.end());
+  std::sort(out.edge_edge.begin(), out.edge_edge.end());
+  std::sort(out.vertex_collider_triangle.begin(), out.vertex_collider_triangle.end());
+  std::sort(out.collider_vertex_triangle.begin(), out.collider_vertex_triangle.end());
+  std::sort(out.edge_collider_edge.begin(), out.edge_collider_edge.end());
+  return {};
+}
+
+}  // namespace animkit
