@@ -1,0 +1,169 @@
+#include "contact_candidates.h"
+
+#include <algorithm>
+#include <string>
+
+#include "animkit/collision/ccd.h"
+
+namespace animkit {
+
+namespace {
+
+Vec3 at(const Eigen::VectorXd& x, int i) {
+  return x.segment<3>(3 * i);
+}
+
+// IPC's mollifier threshold eps_x = 1e-3 |a|^2 |b|^2 from the edges' rest lengths (Li et al.
+// 2020, section 4.3; edge_edge_mollifier.h).
+double mollifier_threshold(double rest_a2, double rest_b2) {
+  return 1e-3 * rest_a2 * rest_b2;
+}
+
+}  // namespace
+
+Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
+                                               const std::vector<TriangleMesh>& obstacles,
+                                               bool self_contact) {
+  ContactGeometry g;
+  g.self_contact = self_contact;
+  auto cloth = build_collision_mesh(model.particle_count(), model.triangles);
+  if (!cloth) return fail("the cloth's triangles: " + cloth.error().message);
+  g.cloth = std::move(*cloth);
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<Vec3> vertices;
+  for (const TriangleMesh& mesh : obstacles) {
+    const int first = static_cast<int>(vertices.size());
+    vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
+    for (const auto& t : mesh.triangles)
+      triangles.push_back({first + t[0], first + t[1], first + t[2]});
+  }
+  auto obstacle_mesh = build_collision_mesh(static_cast<int>(vertices.size()), triangles);
+  if (!obstacle_mesh) return fail("the obstacles' triangles: " + obstacle_mesh.error().message);
+  g.obstacles = std::move(*obstacle_mesh);
+  g.obstacle_positions.resize(3 * static_cast<Eigen::Index>(vertices.size()));
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    g.obstacle_positions.segment<3>(3 * static_cast<Eigen::Index>(i)) = vertices[i];
+  for (const auto& [a, b] : g.obstacles.edges) {
+    g.obstacle_rest_length2.push_back(
+        (at(g.obstacle_positions, a) - at(g.obstacle_positions, b)).squaredNorm());
+  }
+  g.cloth_rest_length2.assign(g.cloth.edges.size(), 0.0);
+  return g;
+}
+
+Result<void> update_obstacle_vertices(ContactGeometry& geometry,
+                                      const std::vector<TriangleMesh>& obstacles) {
+  std::size_t total = 0;
+  for (const TriangleMesh& mesh : obstacles) total += mesh.vertices.size();
+  if (3 * total != static_cast<std::size_t>(geometry.obstacle_positions.size())) {
+    return fail("the obstacles have " + std::to_string(total) + " vertices, not the " +
+                std::to_string(geometry.obstacle_positions.size() / 3) + " they were built with");
+  }
+  Eigen::Index next = 0;
+  for (const TriangleMesh& mesh : obstacles) {
+    for (const Vec3& v : mesh.vertices) {
+      if (!v.allFinite()) return fail("an obstacle vertex has a non-finite coordinate");
+      geometry.obstacle_positions.segment<3>(3 * next++) = v;
+    }
+  }
+  return {};
+}
+
+void set_cloth_rest_lengths(ContactGeometry& geometry, const Eigen::VectorXd& cloth_positions) {
+  for (std::size_t e = 0; e < geometry.cloth.edges.size(); ++e) {
+    const auto [a, b] = geometry.cloth.edges[e];
+    geometry.cloth_rest_length2[e] =
+        (at(cloth_positions, a) - at(cloth_positions, b)).squaredNorm();
+  }
+}
+
+Result<void> ContactPairFinder::gather(const ContactGeometry& g, const Eigen::VectorXd& x,
+                                       const Eigen::VectorXd* step, double radius,
+                                       std::optional<double> ground,
+                                       std::vector<ContactPair>& pairs) {
+  pairs.clear();
+  end_ = step ? Eigen::VectorXd(x + *step) : x;
+  const MeshMotion cloth{g.cloth, x, end_};
+  const MeshMotion obstacles{g.obstacles, g.obstacle_positions, g.obstacle_positions};
+  const bool any_obstacle = !g.obstacles.triangles.empty();
+  if (auto ok = broad_phase_.find(cloth, radius, candidates_, any_obstacle ? &obstacles : nullptr);
+      !ok) {
+    return ok;
+  }
+  const int n = g.cloth_vertices();
+  const auto point_triangle = [&](int p, const std::array<int, 3>& t, int offset) {
+    pairs.push_back(
+        {ContactKind::point_triangle, {p, offset + t[0], offset + t[1], offset + t[2]}});
+  };
+  if (g.self_contact) {
+    for (const auto& c : candidates_.vertex_triangle)
+      point_triangle(c.vertex, g.cloth.triangles[c.triangle], 0);
+    for (const auto& c : candidates_.edge_edge) {
+      const auto& a = g.cloth.edges[c.edge_a];
+      const auto& b = g.cloth.edges[c.edge_b];
+      pairs.push_back(
+          {ContactKind::edge_edge,
+           {a[0], a[1], b[0], b[1]},
+           mollifier_threshold(g.cloth_rest_length2[c.edge_a], g.cloth_rest_length2[c.edge_b])});
+    }
+  }
+  for (const auto& c : candidates_.vertex_collider_triangle)
+    point_triangle(c.vertex, g.obstacles.triangles[c.triangle], n);
+  for (const auto& c : candidates_.collider_vertex_triangle) {
+    const auto& t = g.cloth.triangles[c.triangle];
+    pairs.push_back({ContactKind::point_triangle, {n + c.vertex, t[0], t[1], t[2]}});
+  }
+  for (const auto& c : candidates_.edge_collider_edge) {
+    const auto& a = g.cloth.edges[c.edge_a];
+    const auto& b = g.obstacles.edges[c.edge_b];
+    pairs.push_back(
+        {ContactKind::edge_edge,
+         {a[0], a[1], n + b[0], n + b[1]},
+         mollifier_threshold(g.cloth_rest_length2[c.edge_a], g.obstacle_rest_length2[c.edge_b])});
+  }
+  if (ground) {
+    for (int i = 0; i < n; ++i) {
+      if (std::min(x[3 * i + 1], end_[3 * i + 1]) - *ground < radius)
+        pairs.push_back({ContactKind::ground, {i, -1, -1, -1}});
+    }
+  }
+  return {};
+}
+
+double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>& pairs,
+                        const Eigen::VectorXd& x, const Eigen::VectorXd& step, double ground,
+                        double min_separation) {
+  const int n = g.cloth_vertices();
+  const auto start_of = [&](int v) { return v < n ? at(x, v) : at(g.obstacle_positions, v - n); };
+  const auto move_of = [&](int v) { return v < n ? at(step, v) : Vec3(Vec3::Zero()); };
+  AdditiveCcdSettings settings;
+  settings.separation_fraction = min_separation;
+  double bound = 1.0;
+  for (const ContactPair& pair : pairs) {
+    if (pair.kind == ContactKind::ground) {
+      // Exact for a plane: the height is linear in t; keep (1 - s) of the gap's closing.
+      const int v = pair.vertices[0];
+      const double gap = x[3 * v + 1] - ground, dy = step[3 * v + 1];
+      if (dy < 0.0) bound = std::min(bound, (1.0 - min_separation) * gap / -dy);
+      continue;
+    }
+    std::array<Vec3, 4> start, end;
+    bool moves = false;
+    for (int i = 0; i < 4; ++i) {
+      start[i] = start_of(pair.vertices[i]);
+      const Vec3 d = move_of(pair.vertices[i]);
+      moves = moves || !d.isZero(0.0);
+      end[i] = start[i] + d;
+    }
+    if (!moves) continue;
+    settings.max_time = bound;  // nothing past the bound found so far matters
+    const auto hit = pair.kind == ContactKind::point_triangle
+                         ? point_triangle_ccd(start, end, settings)
+                         : edge_edge_ccd(start, end, settings);
+    if (!hit) return 0.0;  // a non-finite coordinate: take no step
+    bound = std::min(bound, hit->time_of_impact);
+  }
+  return bound;
+}
+
+}  // namespace animkit

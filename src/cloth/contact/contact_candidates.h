@@ -1,0 +1,63 @@
+#pragma once
+// Which contact pairs exist and which are close. Pairs live in one index space: the cloth's
+// particles [0, N), then every obstacle vertex. The broad phase (collision/broad_phase.h) finds
+// the pairs near a configuration or along a step; continuous collision detection
+// (collision/ccd.h) bounds the step for them.
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "animkit/cloth/cloth_model.h"
+#include "animkit/collision/broad_phase.h"
+#include "animkit/collision/collision_mesh.h"
+#include "animkit/core/result.h"
+#include "animkit/core/triangle_mesh.h"
+#include "contact_pair.h"
+
+namespace animkit {
+
+struct ContactGeometry {
+  CollisionMesh cloth;                 ///< the cloth's triangles and edges
+  CollisionMesh obstacles;             ///< every obstacle mesh, concatenated
+  Eigen::VectorXd obstacle_positions;  ///< 3 per obstacle vertex, world, fixed during a step
+  std::vector<double> cloth_rest_length2, obstacle_rest_length2;  ///< per edge, squared
+  bool self_contact = true;
+
+  int cloth_vertices() const { return cloth.vertex_count; }
+};
+
+/// The primitives of the cloth (its triangles and their edges) and of the obstacles.
+Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
+                                               const std::vector<TriangleMesh>& obstacles,
+                                               bool self_contact);
+/// New positions for the obstacles' vertices (same meshes, same vertex counts).
+Result<void> update_obstacle_vertices(ContactGeometry& geometry,
+                                      const std::vector<TriangleMesh>& obstacles);
+/// The cloth's edges' rest lengths from `cloth_positions` (the obstacles' are their own).
+void set_cloth_rest_lengths(ContactGeometry& geometry, const Eigen::VectorXd& cloth_positions);
+
+/// Gathers contact pairs; keeps its broad phase's work vectors between calls.
+class ContactPairFinder {
+ public:
+  /// Every pair (point-triangle, edge-edge, particle-ground) that is, or on x + t step for
+  /// t in [0, 1] may come, within `radius` (m), into `pairs` (in a fixed order). step ==
+  /// nullptr: at x only. Pairs sharing a vertex and pairs of two obstacle primitives are never
+  /// listed; cloth-cloth pairs only with self-contact.
+  Result<void> gather(const ContactGeometry& geometry, const Eigen::VectorXd& x,
+                      const Eigen::VectorXd* step, double radius, std::optional<double> ground,
+                      std::vector<ContactPair>& pairs);
+
+ private:
+  BroadPhase broad_phase_;
+  ContactCandidates candidates_;
+  Eigen::VectorXd end_;
+};
+
+/// The largest t in (0, 1] such that no pair of `pairs` gets closer than `min_separation` of
+/// its distance at x anywhere on x + s step, s in [0, t] (conservative: Additive CCD, and the
+/// exact bound for the ground; obstacles fixed).
+double earliest_contact(const ContactGeometry& geometry, const std::vector<ContactPair>& pairs,
+                        const Eigen::VectorXd& x, const Eigen::VectorXd& step, double ground,
+                        double min_separation);
+
+}  // namespace animkit

@@ -1,0 +1,211 @@
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+
+#include "animkit/cloth/contact.h"
+#include "animkit/core/validation.h"
+#include "contact_candidates.h"
+#include "contact_pair.h"
+
+namespace animkit {
+
+namespace {
+
+// The barrier's force on a particle at distance delta = dhat / 2 is kappa |b'(dhat^2 / 4)| 2
+// delta = 4.3294 kappa dhat^3 (b' from barrier.h at d = D / 4: 1.5 D ln 4 + 2.25 D). The
+// automatic kappa makes that the weight of an average particle, so cloth resting on a surface
+// sits at about half its thickness; heavier loads press closer, where the barrier is steeper.
+constexpr double kHalfThicknessForce = 4.3294;
+
+}  // namespace
+
+std::optional<Error> ContactSettings::validate() const {
+  if (!std::isfinite(thickness) || thickness <= 0.0)
+    return Error{"contact thickness must be > 0 m, got " + format_number(thickness)};
+  if (!std::isfinite(stiffness) || stiffness < 0.0)
+    return Error{"contact stiffness must be >= 0 (0: automatic), got " + format_number(stiffness)};
+  if (!std::isfinite(min_separation) || min_separation <= 0.0 || min_separation >= 1.0)
+    return Error{"contact minimum separation must be in (0, 1), got " +
+                 format_number(min_separation)};
+  return std::nullopt;
+}
+
+int ContactObstacles::vertex_count() const {
+  int n = 0;
+  for (const TriangleMesh& mesh : meshes) n += static_cast<int>(mesh.vertices.size());
+  return n;
+}
+
+struct ContactTerm::Impl {
+  std::shared_ptr<const ClothModel> model;
+  ContactSettings settings;
+  LogBarrier barrier = *LogBarrier::create(1.0);  // on squared distances: dhat^2 (set below)
+  double kappa = 0.0;
+  std::optional<double> ground;
+  ContactGeometry geometry;  // the cloth's and the obstacles' primitives, one index space
+  ContactPairFinder finder;
+  std::vector<ContactPair> pairs;  // what value, gradient and Hessian sum over
+  bool rest_lengths_known = false;
+
+  Vec3 position(const Eigen::VectorXd& x, int v) const {
+    const int n = model->particle_count();
+    return v < n ? Vec3(x.segment<3>(3 * v)) : Vec3(geometry.obstacle_positions.segment<3>(3 * (v - n)));
+  }
+  std::array<Vec3, 4> positions(const Eigen::VectorXd& x, const ContactPair& pair) const {
+    std::array<Vec3, 4> p;
+    for (int i = 0; i < pair.vertex_count(); ++i) p[i] = position(x, pair.vertices[i]);
+    return p;
+  }
+  double ground_height() const { return ground.value_or(0.0); }
+};
+
+ContactTerm::ContactTerm(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+ContactTerm::~ContactTerm() = default;
+
+Result<std::shared_ptr<ContactTerm>> ContactTerm::create(std::shared_ptr<const ClothModel> model,
+                                                         const ContactSettings& settings,
+                                                         ContactObstacles obstacles) {
+  if (auto error = settings.validate()) return fail(error->message);
+  if (model->triangles.empty()) return fail("contact needs the cloth's triangles, and it has none");
+  for (std::size_t m = 0; m < obstacles.meshes.size(); ++m) {
+    if (auto error = obstacles.meshes[m].validate())
+      return fail("obstacle " + std::to_string(m) + ": " + error->message);
+  }
+  if (obstacles.ground_height && !std::isfinite(*obstacles.ground_height))
+    return fail("the ground's height must be finite");
+  auto impl = std::make_unique<Impl>();
+  impl->settings = settings;
+  impl->barrier = *LogBarrier::create(settings.thickness * settings.thickness);
+  impl->ground = obstacles.ground_height;
+  auto geometry = build_contact_geometry(*model, obstacles.meshes, settings.self_contact);
+  if (!geometry) return fail(geometry.error().message);
+  impl->geometry = std::move(*geometry);
+  double mass = 0.0;
+  int free = 0;
+  for (int i = 0; i < model->particle_count(); ++i) {
+    if (model->pinned[i]) continue;
+    mass += model->mass[i];
+    ++free;
+  }
+  const double gravity = std::max(std::abs(model->gravity), 1.0);
+  const double dhat = settings.thickness;
+  impl->kappa = settings.stiffness > 0.0 ? settings.stiffness
+                                         : (free > 0 ? mass / free : 1.0) * gravity /
+                                               (kHalfThicknessForce * dhat * dhat * dhat);
+  impl->model = std::move(model);
+  return std::shared_ptr<ContactTerm>(new ContactTerm(std::move(impl)));
+}
+
+double ContactTerm::stiffness() const {
+  return impl_->kappa;
+}
+
+Result<void> ContactTerm::set_obstacle_vertices(const std::vector<TriangleMesh>& meshes) {
+  return update_obstacle_vertices(impl_->geometry, meshes);
+}
+
+void ContactTerm::prepare(const ClothState& state, double /*h*/) {
+  // The edge-edge mollifier's thresholds come from rest lengths: the cloth's as it starts.
+  if (!impl_->rest_lengths_known) {
+    set_cloth_rest_lengths(impl_->geometry, state.positions);
+    impl_->rest_lengths_known = true;
+  }
+}
+
+void ContactTerm::update(const Eigen::VectorXd& x) {
+  // Every pair within dhat of x: what g's gradient and Hessian at x need. A non-finite x finds
+  // none (g's own gradient there is not finite, and Newton stops).
+  if (!impl_->finder.gather(impl_->geometry, x, nullptr, impl_->settings.thickness, impl_->ground,
+                            impl_->pairs)) {
+    impl_->pairs.clear();
+  }
+}
+
+double ContactTerm::max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) {
+  // Every pair that may come within dhat anywhere on x + t step, t in [0, 1]: the line search
+  // evaluates g there, and CCD bounds t by the first time any of them would touch.
+  if (!impl_->finder.gather(impl_->geometry, x, &step, impl_->settings.thickness, impl_->ground,
+                            impl_->pairs)) {
+    return 0.0;  // a non-finite step: take none of it
+  }
+  return earliest_contact(impl_->geometry, impl_->pairs, x, step, impl_->ground_height(),
+                          impl_->settings.min_separation);
+}
+
+double ContactTerm::value(const Eigen::VectorXd& x) const {
+  double sum = 0.0;
+  for (const ContactPair& pair : impl_->pairs) {
+    sum += contact_barrier(pair, impl_->positions(x, pair), impl_->ground_height(), impl_->barrier);
+  }
+  return impl_->kappa * sum;
+}
+
+double ContactTerm::difference(const Eigen::VectorXd& x, const Eigen::VectorXd& step) const {
+  // Pair by pair, so a large barrier elsewhere does not swamp a small change.
+  const Eigen::VectorXd moved = x + step;
+  double sum = 0.0;
+  for (const ContactPair& pair : impl_->pairs) {
+    const double after = contact_barrier(pair, impl_->positions(moved, pair),
+                                         impl_->ground_height(), impl_->barrier);
+    if (!std::isfinite(after)) return std::numeric_limits<double>::infinity();
+    sum += after -
+           contact_barrier(pair, impl_->positions(x, pair), impl_->ground_height(), impl_->barrier);
+  }
+  return impl_->kappa * sum;
+}
+
+void ContactTerm::add_gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const {
+  const int n = impl_->model->particle_count();
+  for (const ContactPair& pair : impl_->pairs) {
+    const std::array<Vec3, 4> p = impl_->positions(x, pair);
+    if (contact_distance_squared(pair, p, impl_->ground_height()) >= impl_->barrier.dhat())
+      continue;
+    const StencilDerivatives<4> d =
+        contact_barrier_derivatives(pair, p, impl_->ground_height(), impl_->barrier);
+    for (int i = 0; i < pair.vertex_count(); ++i) {
+      const int v = pair.vertices[i];
+      if (v < n) gradient.segment<3>(3 * v) += impl_->kappa * d.gradient.segment<3>(3 * i);
+    }
+  }
+}
+
+void ContactTerm::add_hessian(const Eigen::VectorXd& x, bool /*projected: always*/,
+                              std::vector<HessianBlock>& blocks) const {
+  const int n = impl_->model->particle_count();
+  for (const ContactPair& pair : impl_->pairs) {
+    const std::array<Vec3, 4> p = impl_->positions(x, pair);
+    if (contact_distance_squared(pair, p, impl_->ground_height()) >= impl_->barrier.dhat())
+      continue;
+    const StencilDerivatives<4> d =
+        contact_barrier_derivatives(pair, p, impl_->ground_height(), impl_->barrier);
+    // The cloth's rows and columns of the pair's PSD Hessian (a principal submatrix: PSD too).
+    for (int i = 0; i < pair.vertex_count(); ++i) {
+      if (pair.vertices[i] >= n) continue;
+      for (int j = i; j < pair.vertex_count(); ++j) {
+        if (pair.vertices[j] >= n) continue;
+        blocks.push_back({pair.vertices[i], pair.vertices[j],
+                          impl_->kappa * d.hessian.block<3, 3>(3 * i, 3 * j)});
+      }
+    }
+  }
+}
+
+ContactStats ContactTerm::stats(const Eigen::VectorXd& x) const {
+  ContactStats stats;
+  stats.candidate_pairs = static_cast<int>(impl_->pairs.size());
+  double closest = impl_->barrier.dhat();
+  for (const ContactPair& pair : impl_->pairs) {
+    const double d =
+        contact_distance_squared(pair, impl_->positions(x, pair), impl_->ground_height());
+    if (d < impl_->barrier.dhat()) {
+      ++stats.active_pairs;
+      closest = std::min(closest, d);
+    }
+  }
+  stats.min_distance = std::sqrt(closest);
+  return stats;
+}
+
+}  // namespace animkit

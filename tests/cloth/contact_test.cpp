@@ -1,0 +1,154 @@
+// Contact (contact.h): no step ever produces an intersection, checked on every frame by an
+// exact test that shares no code with the solver (CGAL, tests/support/intersection_audit.h);
+// the term's gradient against finite differences; pins hold; bad settings are refused.
+#include "animkit/cloth/contact.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "animkit/cloth/cloth_simulator.h"
+#include "animkit/cloth/grid_cloth.h"
+#include "animkit/cloth/integrator_registry.h"
+#include "animkit/collision/collider_surface.h"
+#include "intersection_audit.h"
+
+namespace animkit {
+namespace {
+
+TriangleMesh cloth_mesh(const ClothSimulator& sim) {
+  TriangleMesh mesh;
+  for (int i = 0; i < sim.model().particle_count(); ++i)
+    mesh.vertices.push_back(sim.state().position(i));
+  mesh.triangles = sim.model().triangles;
+  return mesh;
+}
+
+TriangleMesh sphere(const Vec3& center, double radius) {
+  TriangleMesh mesh = collider_surface(SphereShape{radius}, 3);
+  for (Vec3& v : mesh.vertices) v += center;
+  return mesh;
+}
+
+// A free cotton sheet (side 0.6 m, `cells` per side) centred above the origin at `height`.
+ClothDesc cotton_sheet(int cells, double height, const Vec3& velocity) {
+  GridClothOptions grid{.cells = cells, .size = 0.6, .gravity = 9.81};
+  grid.height = height;
+  grid.material = ClothMaterial{};
+  ClothDesc desc = make_grid_cloth(grid);
+  for (ParticleDesc& p : desc.particles) {
+    p.position.x() -= 0.3;
+    p.velocity = velocity;
+    p.pinned = false;
+  }
+  return desc;
+}
+
+SimulationOptions multigrid_newton(double tolerance) {
+  SimulationOptions options{find_integrator("implicit-multigrid")->defaults, 0};
+  set_tolerance(options.integrator, tolerance);
+  // An impact at 20 m/s takes Newton about 70 iterations: CCD shortens every step while new
+  // parts of the sheet reach the ball.
+  std::get<NewtonSettings>(options.integrator).max_iterations = 500;
+  return options;
+}
+
+TEST(Contact, AClothThrownAtASphereAt20MetresPerSecondNeverPassesThrough) {
+  // dt = 1/30 s at 20 m/s: each step's prediction lies 67 cm on, past the whole sphere.
+  auto sim =
+      ClothSimulator::create(cotton_sheet(12, 0.45, Vec3(0.0, -20.0, 0.0)), multigrid_newton(1e-4));
+  ASSERT_TRUE(sim) << sim.error().message;
+  const TriangleMesh ball = sphere(Vec3::Zero(), 0.25);
+  auto contact =
+      ContactTerm::create(std::make_shared<const ClothModel>(sim->model()), {.thickness = 2e-3},
+                          {.meshes = {ball}, .ground_height = -0.5});
+  ASSERT_TRUE(contact) << contact.error().message;
+  ASSERT_TRUE(sim->add_energy_term(*contact));
+  int converged = 0, most_contacts = 0;
+  for (int frame = 1; frame <= 30; ++frame) {
+    const auto report = sim->step(1.0 / 30.0);
+    ASSERT_TRUE(report) << report.error().message;
+    converged += report->converged ? 1 : 0;
+    const TriangleMesh cloth = cloth_mesh(*sim);
+    ASSERT_FALSE(testing::meshes_intersect(cloth, ball)) << "frame " << frame;
+    ASSERT_EQ(testing::count_self_intersections(cloth), 0) << "frame " << frame;
+    for (const Vec3& v : cloth.vertices) {
+      ASSERT_GT(v.norm(), 0.25 * 0.98) << "a particle inside the ball at frame " << frame;
+      ASSERT_GT(v.y(), -0.5) << "a particle below the ground at frame " << frame;
+    }
+    most_contacts = std::max(most_contacts, (*contact)->stats(sim->state().positions).active_pairs);
+    if (frame == 1) {
+      EXPECT_LT(report->step_bound_min, 1.0);  // CCD held the first step back
+    }
+  }
+  EXPECT_EQ(converged, 30);
+  EXPECT_GT(most_contacts, 20);  // it did hit the ball (then slides off it, frictionless)
+}
+
+TEST(Contact, ASheetSettlesOnTheGroundWithinItsThicknessAndPinsHold) {
+  ClothDesc desc = cotton_sheet(8, 0.05, Vec3::Zero());
+  desc.particles[0].pinned = true;  // one corner held 5 cm up
+  const Vec3 pinned = desc.particles[0].position;
+  auto sim = ClothSimulator::create(desc, multigrid_newton(1e-4));
+  ASSERT_TRUE(sim);
+  auto contact = ContactTerm::create(std::make_shared<const ClothModel>(sim->model()),
+                                     {.thickness = 2e-3}, {.meshes = {}, .ground_height = 0.0});
+  ASSERT_TRUE(contact);
+  ASSERT_TRUE(sim->add_energy_term(*contact));
+  for (int frame = 0; frame < 60; ++frame) ASSERT_TRUE(sim->step(1.0 / 60.0));
+  EXPECT_EQ(sim->state().position(0), pinned);
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < sim->model().particle_count(); ++i)
+    lowest = std::min(lowest, sim->state().position(i).y());
+  EXPECT_GT(lowest, 0.0);
+  EXPECT_LT(lowest, 2e-3);  // resting within the barrier's reach
+}
+
+TEST(Contact, GradientMatchesFiniteDifferences) {
+  auto sim = ClothSimulator::create(cotton_sheet(4, 0.0012, Vec3::Zero()), {});
+  ASSERT_TRUE(sim);
+  const auto model = std::make_shared<const ClothModel>(sim->model());
+  // A ball just under the sheet's middle and the ground just under it: pairs of every kind.
+  auto contact =
+      ContactTerm::create(model, {.thickness = 2e-3},
+                          {.meshes = {sphere(Vec3(0.0, -0.2985, 0.0), 0.3)}, .ground_height = 0.0});
+  ASSERT_TRUE(contact);
+  ContactTerm& term = **contact;
+  term.prepare(sim->state(), 1.0 / 60.0);
+  Eigen::VectorXd x = sim->state().positions;
+  for (Eigen::Index k = 0; k < x.size(); ++k) x[k] += 2e-4 * std::sin(1.9 * static_cast<double>(k));
+  term.update(x);
+  ASSERT_GT(term.stats(x).active_pairs, 0);
+  Eigen::VectorXd gradient = Eigen::VectorXd::Zero(x.size());
+  term.add_gradient(x, gradient);
+  ASSERT_GT(gradient.norm(), 0.0);
+  const double eps = 1e-8;
+  for (Eigen::Index k = 0; k < x.size(); ++k) {
+    Eigen::VectorXd plus = x, minus = x;
+    plus[k] += eps;
+    minus[k] -= eps;
+    const double fd = (term.value(plus) - term.value(minus)) / (2 * eps);
+    EXPECT_NEAR(gradient[k], fd, 1e-4 * (std::abs(fd) + 1e-3 * gradient.norm())) << k;
+  }
+}
+
+TEST(Contact, BadSettingsAreRefusedByName) {
+  auto sim = ClothSimulator::create(make_grid_cloth({.cells = 3}), {});
+  ASSERT_TRUE(sim);
+  const auto model = std::make_shared<const ClothModel>(sim->model());
+  EXPECT_EQ(ContactTerm::create(model, {.thickness = 0.0}, {}).error().message,
+            "contact thickness must be > 0 m, got 0");
+  EXPECT_EQ(ContactTerm::create(model, {.stiffness = -1.0}, {}).error().message,
+            "contact stiffness must be >= 0 (0: automatic), got -1");
+  EXPECT_EQ(ContactTerm::create(model, {.min_separation = 1.0}, {}).error().message,
+            "contact minimum separation must be in (0, 1), got 1");
+  EXPECT_EQ(ContactTerm::create(model, {}, {.meshes = {TriangleMesh{}}, .ground_height = {}})
+                .error()
+                .message,
+            "obstacle 0: the mesh has no triangles");
+}
+
+}  // namespace
+}  // namespace animkit
