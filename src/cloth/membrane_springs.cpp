@@ -15,21 +15,25 @@ std::array<double, 3> membrane_spring_stiffness(const std::array<Vec3, 3>& x,
   if (w.squaredNorm() < 1e-12 * warp.squaredNorm()) w = x[1] - x[0];
   w.normalize();
   const Vec3 f = normal.cross(w);
-  Eigen::Matrix3d system;
+  // Dynamic sizes: GCC 12 reports a false out-of-bounds read in the fixed 3 x 3 solve.
+  Eigen::MatrixXd system(3, 3);
   std::array<double, 3> length2{};
   for (int e = 0; e < 3; ++e) {
     const Vec3 d = x[(e + 1) % 3] - x[e];
     length2[e] = d.squaredNorm();
     const double c = d.dot(w) / d.norm(), s = d.dot(f) / d.norm();
-    system.col(e) << c * c * c * c, s * s * s * s, c * c * s * s;
+    system(0, e) = c * c * c * c;
+    system(1, e) = s * s * s * s;
+    system(2, e) = c * c * s * s;
   }
-  const Eigen::Vector3d target(material.stretch, material.stretch, material.shear);
+  Eigen::VectorXd target(3);
+  target << material.stretch, material.stretch, material.shear;
   // Rank decided relative to the largest entry (they are at most 1): an equilateral triangle's
   // two look-alike columns differ by rounding only.
-  Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix3d> solver;
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> solver;
   solver.setThreshold(1e-9);
   solver.compute(system);
-  const Eigen::Vector3d kappa = solver.solve(target);
+  const Eigen::VectorXd kappa = solver.solve(target);
   std::array<double, 3> k{};
   for (int e = 0; e < 3; ++e) k[e] = std::max(kappa[e], 0.0) * area / length2[e];
   return k;

@@ -18,7 +18,11 @@
 // k = (S - G) / 2 on each leg and G on the hypotenuse: two such triangles per grid cell give the
 // grid's axis springs S - G and C66 = G. What is left over is C16 = sum kappa c^3 s and C26 (a
 // coupling of shear and stretch, of the order of the shear stiffness), which cancels between
-// triangles of opposite orientation. (Van Gelder 1998, "Approximate simulation of elastic
+// triangles of opposite orientation, but not on a mesh whose edges leave the warp and weft:
+// there a stiff edge a little off the warp gives C16 ~ (S - G) c^3 s, far above the shear G of
+// a cloth like cotton, and the sheet stretches more through the soft shear (measured in
+// tests/cloth/mesh_resolution_test.cpp; a per-triangle FEM membrane would represent C exactly).
+// (Van Gelder 1998, "Approximate simulation of elastic
 // membranes by triangulated spring meshes", derives such stiffnesses for isotropic membranes;
 // Delingette 2008, "Triangular springs for modeling nonlinear membranes", shows what springs
 // alone cannot represent.)

@@ -22,7 +22,7 @@
 namespace animkit {
 
 struct MeshClothOptions {
-  TriangleMesh mesh;  ///< the sheet at rest, world space (m with a material); manifold
+  TriangleMesh mesh = {};  ///< the sheet at rest, world space (m with a material); manifold
   /// The lab's parameters, used without a material: mass per particle (> 0, kg or scene units),
   /// stiffness of every spring (> 0, N/m), the dashpot coefficient (>= 0) and gravity along -y.
   /// Springs join the ends of every edge and, across each interior edge, its two opposite
@@ -36,10 +36,10 @@ struct MeshClothOptions {
   /// The material's warp direction (world space, any length > 0; default +x), projected onto
   /// each triangle's plane; the weft is perpendicular to it in the plane.
   Vec3 warp = Vec3::UnitX();
-  std::vector<int> pins;  ///< vertex indices to pin, each in [0, vertex count)
+  std::vector<int> pins = {};  ///< vertex indices to pin, each in [0, vertex count)
   /// Boxes (world space) pinning every vertex inside them (borders included); each must hold
   /// at least one vertex.
-  std::vector<Eigen::AlignedBox3d> pin_boxes;
+  std::vector<Eigen::AlignedBox3d> pin_boxes = {};
 };
 
 /// The cloth's description. Errors: the mesh's (TriangleMesh::validate, a non-manifold edge, a
