@@ -15,6 +15,7 @@
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/integrator_choice.h"
 #include "animkit/cloth/material.h"
+#include "animkit/cloth/mesh_cloth.h"
 #include "animkit/cloth/parameter_ranges.h"
 #include "animkit/core/quote.h"
 #include "animkit/core/validation.h"
@@ -98,6 +99,26 @@ void print_integrator_trial(const IntegratorChoice& choice) {
   std::printf(" chose %.*s\n", static_cast<int>(choice.name.size()), choice.name.data());
 }
 
+// The cloth to simulate: the grid, or the --mesh with its pins. Checks the options first.
+Result<ClothDesc> cloth_of(const ClothArgs& args) {
+  if (args.mesh.mesh.empty()) {
+    if (!args.mesh.pins.empty() || !args.mesh.pin_boxes.empty()) {
+      return fail(std::string(args.mesh.pins.empty() ? "--pin-box" : "--pin") +
+                  " pins vertices of a --mesh; the grid pins the two corners of its first edge");
+    }
+    if (auto error = args.grid.validate()) return fail(error->message);
+    return make_grid_cloth(args.grid);
+  }
+  if (!args.grid_options_given.empty()) {
+    return fail(args.grid_options_given.front() +
+                " shapes the grid; --mesh gives the cloth's shape and size");
+  }
+  auto options = mesh_cloth_options(args.mesh, args.grid.material, args.grid.mass,
+                                    args.grid.stiffness, args.grid.damping, args.grid.gravity);
+  if (!options) return fail(options.error().message);
+  return make_mesh_cloth(*options);
+}
+
 }  // namespace
 
 int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
@@ -106,7 +127,9 @@ int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
   auto grid = grid_of(args);
   if (!grid) return report_error(grid.error().message);
   args.grid = *grid;
-  if (auto error = args.grid.validate()) return report_error(error->message);
+  const auto cloth = cloth_of(args);
+  if (!cloth) return report_error(cloth.error().message);
+  const bool from_mesh = !args.mesh.mesh.empty();
   if (!kTimeStepRange.contains(args.dt)) {
     return report_error(kTimeStepRange.refusal("--dt (seconds)", args.dt));
   }
@@ -117,7 +140,7 @@ int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
   SimulationOptions options;
   std::string integrator_name = args.integrator;
   if (args.integrator == "auto") {
-    auto choice = choose_integrator(make_grid_cloth(args.grid), args.dt, args.tolerance);
+    auto choice = choose_integrator(*cloth, args.dt, args.tolerance);
     if (!choice) return report_error(choice.error().message);
     print_integrator_trial(*choice);
     options.integrator = choice->settings;
@@ -132,7 +155,7 @@ int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
     set_tolerance(options.integrator, args.tolerance);
   }
   options.substeps = args.substeps;
-  auto sim = ClothSimulator::create(make_grid_cloth(args.grid), options);
+  auto sim = ClothSimulator::create(*cloth, options);
   if (!sim) return report_error(sim.error().message);
 
   // Opened before the run, so a missing OpenGL or ffmpeg stops it before any file is written.
@@ -141,14 +164,16 @@ int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
   auto pictures = PictureOutput::open(picture_args, !out.empty(), 1.0 / args.dt);
   if (!pictures) return report_error(pictures.error().message);
   // One camera for the whole run: the sheet flat and hanging straight down both fit.
+  const Eigen::AlignedBox3d focus = from_mesh ? cloth_focus_bounds(*cloth, sim->state())
+                                              : cloth_focus_bounds(args.grid, sim->state());
+  const double floor_height =
+      from_mesh ? cloth_floor_height(*cloth) : cloth_floor_height(args.grid);
   const OrbitCamera camera =
-      OrbitCamera::framing(cloth_focus_bounds(args.grid, sim->state()), pictures->aspect(),
-                           kClothPictureYaw, kClothPicturePitch);
+      OrbitCamera::framing(focus, pictures->aspect(), kClothPictureYaw, kClothPicturePitch);
   DrawList picture;
   const auto describe_state = [&] {
     picture.clear();
-    describe_cloth(picture, sim->model(), sim->state(),
-                   {.floor_height = cloth_floor_height(args.grid)});
+    describe_cloth(picture, sim->model(), sim->state(), {.floor_height = floor_height});
   };
   if (pictures->take_video_frame()) {
     describe_state();
@@ -188,7 +213,7 @@ int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
   progress.done();
 
   ClothRunInfo info{integrator_name,
-                    args.grid.cells,
+                    from_mesh ? 0 : args.grid.cells,
                     sim->model().particle_count(),
                     sim->model().spring_count(),
                     args.dt,
@@ -200,7 +225,7 @@ int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
                     args.tolerance,
                     divergence,
                     args.material,
-                    args.grid.size};
+                    from_mesh ? 0.0 : args.grid.size};
   if (cache) {
     // A diverged run's results are its metrics (where and how it failed) and no animation:
     // the unfinished cache is dropped with its writer.
@@ -257,6 +282,13 @@ std::function<int()> add_cloth_command(CLI::App& app) {
       ->capture_default_str();
   cloth->add_option("--size", args->grid.size, "Side of the square sheet (m with --material)")
       ->capture_default_str();
+  cloth->add_option("--mesh", args->mesh.mesh,
+                    "An OBJ file: the cloth's shape at rest instead of the grid (particles at its "
+                    "vertices, springs on its edges; pin with --pin or --pin-box)");
+  cloth->add_option("--pin", args->mesh.pins,
+                    "With --mesh: vertices to pin, I,J,... counted from 0 (repeatable)");
+  cloth->add_option("--pin-box", args->mesh.pin_boxes,
+                    "With --mesh: pins every vertex inside the box X0,Y0,Z0,X1,Y1,Z1 (repeatable)");
   cloth->add_option("--material", args->material,
                     "A physical sheet of: " + material_names() +
                         " (masses and stiffnesses from the material, gravity 9.81; see the "
@@ -296,6 +328,9 @@ std::function<int()> add_cloth_command(CLI::App& app) {
     args->material_given = cloth->count("--material") > 0;
     for (const char* option : {"--mass", "--stiffness", "--damping"}) {
       if (cloth->count(option) > 0) args->lab_options_given.emplace_back(option);
+    }
+    for (const char* option : {"--grid", "--size"}) {
+      if (cloth->count(option) > 0) args->grid_options_given.emplace_back(option);
     }
     return run_cloth(*args);
   };

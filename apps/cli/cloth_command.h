@@ -8,6 +8,7 @@
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/integrator_registry.h"
+#include "mesh_cloth_args.h"
 #include "picture_output.h"
 
 namespace animkit::cli {
@@ -15,6 +16,9 @@ namespace animkit::cli {
 /// Everything `animkit cloth` is asked to do.
 struct ClothArgs {
   GridClothOptions grid;  ///< the lab's cloth by default
+  MeshClothArgs mesh;     ///< --mesh: a cloth cut from an OBJ mesh instead of the grid
+  /// The grid-only options given on the command line (--grid, --size): refused with --mesh.
+  std::vector<std::string> grid_options_given;
   int frames = 300;
   double dt = 1.0 / 60.0;
   std::string integrator{integrator_entry(SimulationOptions{}.integrator).name};
@@ -23,7 +27,7 @@ struct ClothArgs {
   /// A material preset (material.h); empty: the lab's per-particle parameters.
   std::string material;
   bool material_given = false;  ///< --material was on the command line (even empty: an error)
-  bool gravity_given = false;  ///< --gravity was on the command line (else 9.81 with a material)
+  bool gravity_given = false;   ///< --gravity was on the command line (else 9.81 with a material)
   /// The lab-parameter options given on the command line (--mass, ...): a material sets them.
   std::vector<std::string> lab_options_given;
   std::string out;  ///< empty: write no files

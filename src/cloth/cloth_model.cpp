@@ -75,12 +75,26 @@ std::optional<Error> ClothDesc::validate() const {
   for (std::size_t k = 0; k < bends.size(); ++k) {
     const BendDesc& b = bends[k];
     const std::string name = "bend " + std::to_string(k);
-    for (int v : {b.a, b.b, b.c}) {
-      if (v < 0 || v >= n) return Error{name + " has no particle " + std::to_string(v)};
+    const int size = b.particles[3] < 0 ? 3 : 4;
+    double sum = 0.0, magnitude = 0.0;
+    for (int i = 0; i < 4; ++i) {
+      const int v = b.particles[i];
+      if (i < size && (v < 0 || v >= n))
+        return Error{name + " has no particle " + std::to_string(v)};
+      for (int j = 0; j < i && i < size; ++j) {
+        if (b.particles[j] == v)
+          return Error{name + " joins particle " + std::to_string(v) + " to itself"};
+      }
+      if (!std::isfinite(b.weights[i])) return Error{name + " has a non-finite weight"};
+      if (i >= size && b.weights[i] != 0.0)
+        return Error{name + " has a weight on its unused fourth slot"};
+      sum += b.weights[i];
+      magnitude += std::abs(b.weights[i]);
     }
-    if (b.a == b.b || b.b == b.c || b.a == b.c) {
-      return Error{name + " joins particle " + std::to_string(b.a == b.b ? b.b : b.c) +
-                   " to itself"};
+    // The Hessian's spring-block form (bend_energy.h) needs sum w = 0, and so does invariance
+    // under translation.
+    if (!(std::abs(sum) <= 1e-9 * magnitude)) {
+      return Error{name + " weights sum to " + format_number(sum) + ", not zero"};
     }
     if (!kStiffnessRange.contains(b.stiffness)) {
       return Error{kStiffnessRange.refusal(name + " stiffness", b.stiffness)};
@@ -132,10 +146,15 @@ Result<BuiltCloth> build_cloth(const ClothDesc& desc) {
     return it->second;
   };
   for (const BendDesc& b : desc.bends) {
-    m.bends.push_back({b.a, b.b, b.c});
+    m.bends.push_back(b.particles);
+    m.bend_weights.push_back(b.weights);
     m.bend_stiffness.push_back(b.stiffness);
-    m.bend_springs.push_back(
-        {spring_joining(b.a, b.b), spring_joining(b.b, b.c), spring_joining(b.a, b.c)});
+    std::array<int, 6> springs{-1, -1, -1, -1, -1, -1};
+    for (std::size_t q = 0; q < kBendPairs.size(); ++q) {
+      const int i = b.particles[kBendPairs[q][0]], j = b.particles[kBendPairs[q][1]];
+      if (i >= 0 && j >= 0) springs[q] = spring_joining(i, j);
+    }
+    m.bend_springs.push_back(springs);
   }
   m.triangles = desc.triangles;
   m.gravity = desc.gravity;
@@ -155,8 +174,7 @@ ClothEnergy cloth_energy(const ClothModel& model, const ClothState& state) {
                                model.rest_length[s]);
   }
   for (int k = 0; k < model.bend_count(); ++k) {
-    const auto [a, b, c] = model.bends[k];
-    e.elastic += bend_energy(state.position(a), state.position(b), state.position(c),
+    e.elastic += bend_energy(state.positions, model.bends[k], model.bend_weights[k],
                              model.bend_stiffness[k]);
   }
   e.total = e.kinetic + e.elastic + e.gravitational;

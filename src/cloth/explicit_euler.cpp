@@ -26,10 +26,9 @@ void cloth_forces(const ClothModel& model, const Eigen::VectorXd& positions,
   }
   for (int k = 0; k < model.bend_count(); ++k) {
     const auto& p = model.bends[k];
-    const Vec3 e = model.bend_stiffness[k] * bend_vector(positions.segment<3>(3 * p[0]),
-                                                         positions.segment<3>(3 * p[1]),
-                                                         positions.segment<3>(3 * p[2]));
-    for (int j = 0; j < 3; ++j) forces.segment<3>(3 * p[j]) -= kBendWeights[j] * e;
+    const auto& w = model.bend_weights[k];
+    const Vec3 e = model.bend_stiffness[k] * bend_vector(positions, p, w);
+    for (int j = 0; j < bend_size(p); ++j) forces.segment<3>(3 * p[j]) -= w[j] * e;
   }
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cassert>
 
+#include "animkit/cloth/bend_energy.h"
+
 namespace animkit {
 
 GraphColoring greedy_coloring(int vertex_count, std::span<const std::array<int, 2>> edges) {
@@ -61,10 +63,10 @@ GraphColoring greedy_coloring(int vertex_count, std::span<const std::array<int, 
 
 std::vector<std::array<int, 2>> cloth_conflict_edges(const ClothModel& model) {
   std::vector<std::array<int, 2>> edges(model.springs.begin(), model.springs.end());
-  for (const auto& [a, b, c] : model.bends) {
-    edges.push_back({a, b});
-    edges.push_back({b, c});
-    edges.push_back({a, c});
+  for (const auto& bend : model.bends) {
+    for (const auto& [i, j] : kBendPairs) {
+      if (bend[i] >= 0 && bend[j] >= 0) edges.push_back({bend[i], bend[j]});
+    }
   }
   return edges;
 }

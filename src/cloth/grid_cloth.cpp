@@ -88,8 +88,10 @@ void add_material_elements(const GridClothOptions& o, ClothDesc& desc) {
       if (i > 0 && j > 0) desc.springs.push_back({id(i, j), id(i - 1, j - 1), -1.0, m.shear});
       if (i > 0 && j < n) desc.springs.push_back({id(i, j), id(i - 1, j + 1), -1.0, m.shear});
       if (bend == 0.0) continue;
-      if (i > 1) desc.bends.push_back({id(i - 2, j), id(i - 1, j), id(i, j), bend * share(j)});
-      if (j > 1) desc.bends.push_back({id(i, j - 2), id(i, j - 1), id(i, j), bend * share(i)});
+      if (i > 1)
+        desc.bends.push_back(line_bend(id(i - 2, j), id(i - 1, j), id(i, j), bend * share(j)));
+      if (j > 1)
+        desc.bends.push_back(line_bend(id(i, j - 2), id(i, j - 1), id(i, j), bend * share(i)));
     }
   }
 }

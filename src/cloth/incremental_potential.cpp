@@ -31,10 +31,14 @@ IncrementalPotential::IncrementalPotential(const ClothModel& model)
     spring_force_scale_ += std::pow(model.stiffness[k] * model.rest_length[k], 2);
   }
   spring_force_scale_ = std::sqrt(spring_force_scale_);
-  // Bends: constant blocks on their three springs (see bend_energy.h).
+  // Bends: constant blocks on the springs of their particle pairs (see bend_energy.h).
   for (int k = 0; k < model.bend_count(); ++k) {
-    for (int j = 0; j < 3; ++j)
-      bend_coupling_[model.bend_springs[k][j]] += kBendCouplings[j] * model.bend_stiffness[k];
+    for (std::size_t q = 0; q < kBendPairs.size(); ++q) {
+      const int s = model.bend_springs[k][q];
+      if (s < 0) continue;
+      bend_coupling_[s] += bend_coupling(model.bend_weights[k], kBendPairs[q][0], kBendPairs[q][1],
+                                         model.bend_stiffness[k]);
+    }
   }
 }
 
@@ -94,8 +98,7 @@ double IncrementalPotential::value(const Eigen::VectorXd& x) const {
     acc[1] += axial * axial;
   });
   const double bends = parallel::sum<2>(model_.bend_count(), partials_, [&](int k, Acc& acc) {
-    const auto [a, b, c] = model_.bends[k];
-    acc[0] += bend_energy(at(x, a), at(x, b), at(x, c), model_.bend_stiffness[k]);
+    acc[0] += bend_energy(x, model_.bends[k], model_.bend_weights[k], model_.bend_stiffness[k]);
   })[0];
   double terms = 0.0;
   for (const auto& term : terms_) terms += term->value(x);
@@ -129,9 +132,8 @@ double IncrementalPotential::difference(const Eigen::VectorXd& x,
   });
   const double bends = parallel::sum<2>(model_.bend_count(), partials_, [&](int k, Acc& acc) {
     // |e + de|^2 - |e|^2 = de.(2e + de).
-    const auto [a, b, c] = model_.bends[k];
-    const Vec3 e = bend_vector(at(x, a), at(x, b), at(x, c));
-    const Vec3 de = bend_vector(at(step, a), at(step, b), at(step, c));
+    const Vec3 e = bend_vector(x, model_.bends[k], model_.bend_weights[k]);
+    const Vec3 de = bend_vector(step, model_.bends[k], model_.bend_weights[k]);
     acc[0] += 0.5 * model_.bend_stiffness[k] * de.dot(2.0 * e + de);
   })[0];
   double terms = 0.0;
@@ -157,9 +159,10 @@ void IncrementalPotential::gradient(const Eigen::VectorXd& x, Eigen::VectorXd& g
   });
   parallel::scatter(bend_schedule_, [&](int k) {
     const auto& particles = model_.bends[k];
-    const Vec3 e = model_.bend_stiffness[k] *
-                   bend_vector(at(x, particles[0]), at(x, particles[1]), at(x, particles[2]));
-    for (int j = 0; j < 3; ++j) gradient.segment<3>(3 * particles[j]) += kBendWeights[j] * e;
+    const auto& weights = model_.bend_weights[k];
+    const Vec3 e = model_.bend_stiffness[k] * bend_vector(x, particles, weights);
+    for (int j = 0; j < bend_size(particles); ++j)
+      gradient.segment<3>(3 * particles[j]) += weights[j] * e;
   });
   for (const auto& term : terms_) term->add_gradient(x, gradient);
   parallel::for_each(model_.particle_count(), [&](int i) {

@@ -49,11 +49,12 @@ Entries collect_entries(const ClothModel& model) {
   // A bend's constant Hessian c w w^T (bend_energy.h), entered exactly.
   for (int k = 0; k < model.bend_count(); ++k) {
     const auto& p = model.bends[k];
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) {
+    const auto& w = model.bend_weights[k];
+    const int size = bend_size(p);
+    for (int i = 0; i < size; ++i) {
+      for (int j = 0; j < size; ++j) {
         if (free(p[i]) && free(p[j]))
-          e.stiffness.emplace_back(p[i], p[j],
-                                   model.bend_stiffness[k] * kBendWeights[i] * kBendWeights[j]);
+          e.stiffness.emplace_back(p[i], p[j], model.bend_stiffness[k] * w[i] * w[j]);
       }
     }
   }

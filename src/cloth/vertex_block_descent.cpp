@@ -77,7 +77,9 @@ VertexBlockDescent::VertexBlockDescent(std::shared_ptr<const ClothModel> model,
       ++spring_start_[static_cast<std::size_t>(end) + 1];
   }
   for (const auto& bend : model_.bends) {
-    for (int p : bend) ++bend_start_[static_cast<std::size_t>(p) + 1];
+    for (int p : bend) {
+      if (p >= 0) ++bend_start_[static_cast<std::size_t>(p) + 1];
+    }
   }
   for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
     spring_start_[i + 1] += spring_start_[i];
@@ -96,8 +98,9 @@ VertexBlockDescent::VertexBlockDescent(std::shared_ptr<const ClothModel> model,
   }
   fill.assign(bend_start_.begin(), bend_start_.end() - 1);
   for (int k = 0; k < model_.bend_count(); ++k) {
-    for (int slot = 0; slot < 3; ++slot) {
-      const int p = model_.bends[static_cast<std::size_t>(k)][static_cast<std::size_t>(slot)];
+    const auto& bend = model_.bends[static_cast<std::size_t>(k)];
+    for (int slot = 0; slot < bend_size(bend); ++slot) {
+      const int p = bend[static_cast<std::size_t>(slot)];
       incident_bends_[static_cast<std::size_t>(fill[static_cast<std::size_t>(p)]++)] = {k, slot};
     }
   }
@@ -128,9 +131,9 @@ double VertexBlockDescent::local_difference(int i, const Vec3& step) const {
   for (int e = bend_start_[static_cast<std::size_t>(i)];
        e < bend_start_[static_cast<std::size_t>(i) + 1]; ++e) {
     const auto [k, slot] = incident_bends_[static_cast<std::size_t>(e)];
-    const auto& p = model_.bends[static_cast<std::size_t>(k)];
-    const Vec3 bend = bend_vector(at(x_, p[0]), at(x_, p[1]), at(x_, p[2]));
-    const Vec3 moved = kBendWeights[slot] * step;
+    const auto ku = static_cast<std::size_t>(k);
+    const Vec3 bend = bend_vector(x_, model_.bends[ku], model_.bend_weights[ku]);
+    const Vec3 moved = model_.bend_weights[ku][static_cast<std::size_t>(slot)] * step;
     elastic +=
         0.5 * model_.bend_stiffness[static_cast<std::size_t>(k)] * moved.dot(2.0 * bend + moved);
   }
@@ -177,10 +180,10 @@ void VertexBlockDescent::update_particle(int i, SweepTotals& totals) {
   for (int e = bend_start_[static_cast<std::size_t>(i)];
        e < bend_start_[static_cast<std::size_t>(i) + 1]; ++e) {
     const auto [k, slot] = incident_bends_[static_cast<std::size_t>(e)];
-    const auto& p = model_.bends[static_cast<std::size_t>(k)];
-    const double c = model_.bend_stiffness[static_cast<std::size_t>(k)];
-    const double w = kBendWeights[slot];
-    gradient += (c * w) * bend_vector(at(x_, p[0]), at(x_, p[1]), at(x_, p[2]));
+    const auto ku = static_cast<std::size_t>(k);
+    const double c = model_.bend_stiffness[ku];
+    const double w = model_.bend_weights[ku][static_cast<std::size_t>(slot)];
+    gradient += (c * w) * bend_vector(x_, model_.bends[ku], model_.bend_weights[ku]);
     bend_diagonal += c * w * w;
   }
   hessian.diagonal().array() += bend_diagonal;

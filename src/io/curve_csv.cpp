@@ -1,12 +1,12 @@
 #include "animkit/io/curve_csv.h"
 
-#include <cfenv>
 #include <cmath>
 #include <cstdlib>
 #include <string>
 
 #include "animkit/core/quote.h"
 #include "animkit/io/file_bytes.h"
+#include "held_fp_exceptions.h"
 
 namespace animkit {
 
@@ -26,19 +26,6 @@ bool parse_number(std::string_view field, double& value) {
   value = std::strtod(owned.c_str(), &end);
   return !owned.empty() && end == owned.c_str() + owned.size();
 }
-
-// strtod signals overflow ("1e999") by raising the floating-point overflow flag on purpose;
-// held here so a caller that traps floating-point exceptions gets an error value, not SIGFPE.
-class HeldFloatingPointExceptions {
- public:
-  HeldFloatingPointExceptions() { std::feholdexcept(&saved_); }
-  ~HeldFloatingPointExceptions() { std::fesetenv(&saved_); }
-  HeldFloatingPointExceptions(const HeldFloatingPointExceptions&) = delete;
-  HeldFloatingPointExceptions& operator=(const HeldFloatingPointExceptions&) = delete;
-
- private:
-  std::fenv_t saved_;
-};
 
 }  // namespace
 

@@ -193,6 +193,45 @@ Eigen::AlignedBox3d cloth_focus_bounds(const GridClothOptions& grid, const Cloth
   return box;
 }
 
+namespace {
+
+// The rest shape's box and the lowest point a sheet hanging from its pins reaches (by the
+// grid's measure: kHangingSides of its largest side below its lowest pin).
+struct Hanging {
+  Eigen::AlignedBox3d rest;
+  double side = 0.0, bottom = 0.0;
+};
+Hanging hanging(const ClothDesc& desc) {
+  Hanging h;
+  double top = std::numeric_limits<double>::infinity();
+  for (const ParticleDesc& p : desc.particles) {
+    h.rest.extend(p.position);
+    if (p.pinned) top = std::min(top, p.position.y());
+  }
+  if (desc.particles.empty()) return h;
+  if (!std::isfinite(top)) top = h.rest.min().y();
+  h.side = h.rest.sizes().maxCoeff();
+  h.bottom = top - kHangingSides * h.side;
+  return h;
+}
+
+}  // namespace
+
+double cloth_floor_height(const ClothDesc& desc) {
+  const Hanging h = hanging(desc);
+  return h.bottom - 0.1 * h.side;
+}
+
+Eigen::AlignedBox3d cloth_focus_bounds(const ClothDesc& desc, const ClothState& state) {
+  const Hanging h = hanging(desc);
+  Eigen::AlignedBox3d box = h.rest;
+  for (Eigen::Index i = 0; i < state.positions.size() / 3; ++i) {
+    box.extend(Vec3(state.positions.segment<3>(3 * i)));
+  }
+  if (!h.rest.isEmpty()) box.extend(Vec3(h.rest.center().x(), h.bottom, h.rest.center().z()));
+  return box;
+}
+
 void ClothScene::describe(DrawList& out, ClothStyle style) const {
   style.floor_height = cloth_floor_height(options_.grid);
   describe_cloth(out, simulator_.model(), simulator_.state(), style);

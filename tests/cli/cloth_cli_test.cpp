@@ -5,8 +5,10 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "../support/mesh_sheets.h"
 #include "../support/run_command.h"
 #include "../support/temp_files.h"
 #include "animkit/cloth/integrator_registry.h"
@@ -115,6 +117,45 @@ TEST(ClothCli, DivergedRunReportsAndWritesNoAnimation) {
   EXPECT_EQ(m["divergence"].get<std::string>().rfind("the simulation diverged", 0), 0u);
 }
 
+// A 1 m square of 9 x 9 vertices, jittered, as an OBJ file in `dir`.
+fs::path square_obj(const fs::path& dir) {
+  const fs::path path = dir / "square.obj";
+  std::ofstream(path) << animkit::testing_support::obj_text(
+      animkit::testing_support::square_sheet(8, 1.0, 1.0, 0.2));
+  return path;
+}
+
+TEST(ClothCli, AMeshClothWithAMaterialWritesEveryOutput) {
+  const fs::path out = fresh_dir("mesh_cotton");
+  const fs::path obj = square_obj(fresh_dir("mesh_cotton_in"));
+  // Pinned by index (vertex 0: a corner) and by a box around the opposite corner of that edge.
+  const auto r = run_command(kCli + " cloth --mesh " + obj.string() +
+                             " --material cotton --pin 0 --pin-box -0.01,0.9,0.49,0.01,1.1,0.51 "
+                             "--frames 10 --out " +
+                             out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto m = nlohmann::json::parse(read_file(out / "metrics.json"));
+  EXPECT_EQ(m["particles"], 81);
+  EXPECT_EQ(m["converged_fraction"], 1.0);
+  EXPECT_EQ(m["options"]["material"], "cotton");
+  EXPECT_EQ(m["options"]["gravity"], 9.81);
+  EXPECT_TRUE(fs::exists(out / "cloth.obj"));
+  EXPECT_TRUE(fs::exists(out / "final.png"));
+  const std::string pc2 = read_file(out / "cloth.pc2");
+  EXPECT_EQ(pc2.size(), 32u + 11u * 81u * 12u);
+  // The pinned vertices 0 and 8 never move: their last frame is their first.
+  for (const int v : {0, 8}) {
+    EXPECT_EQ(pc2.substr(32 + v * 12, 12), pc2.substr(32 + (10 * 81 + v) * 12, 12)) << v;
+  }
+}
+
+TEST(ClothCli, AMeshClothWithTheLabsParameters) {
+  const fs::path obj = square_obj(fresh_dir("mesh_lab_in"));
+  const auto r = run_command(kCli + " cloth --mesh " + obj.string() +
+                             " --pin 0,8 --mass 0.5 --stiffness 200 --frames 5 --no-picture");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+}
+
 struct BadCloth {
   std::string args;
   std::string message;
@@ -160,14 +201,24 @@ INSTANTIATE_TEST_SUITE_P(
         BadCloth{"--material cotton --size -1", "cloth size must be positive and finite, got -1"},
         BadCloth{"--material cotton --grid 500 --size 0.1",
                  "the material's particle mass at 501 x 501 particles and 0.1 m must be between"},
-        BadCloth{"--out /proc/animkit-cannot-write", "cannot create output folder"}),
+        BadCloth{"--out /proc/animkit-cannot-write", "cannot create output folder"},
+        BadCloth{"--pin 0", "--pin pins vertices of a --mesh; the grid pins the two corners"},
+        BadCloth{"--pin-box 0,0,0,1,1,1", "--pin-box pins vertices of a --mesh"},
+        BadCloth{"--mesh /nonexistent/cloth.obj", "/nonexistent/cloth.obj: no such file"},
+        BadCloth{"--mesh /nonexistent/cloth.obj --grid 4",
+                 "--grid shapes the grid; --mesh gives the cloth's shape and size"},
+        BadCloth{"--mesh /nonexistent/cloth.obj --pin 1,x",
+                 "--pin expects vertex indices I,J,... (counted from 0), got '1,x'"},
+        BadCloth{"--mesh /nonexistent/cloth.obj --pin-box 0,0,0,1,1",
+                 "--pin-box expects six finite numbers X0,Y0,Z0,X1,Y1,Z1, got '0,0,0,1,1'"}),
     [](const auto& param_info) { return "case" + std::to_string(param_info.index); });
 
 TEST(ClothCli, HelpExplainsEveryOption) {
   const auto r = run_command(kCli + " cloth --help");
   ASSERT_EQ(r.exit_code, 0);
-  for (const char* option : {"--grid", "--frames", "--dt", "--integrator", "--substeps", "--mass",
-                             "--stiffness", "--damping", "--gravity", "--tolerance", "--out"}) {
+  for (const char* option :
+       {"--grid", "--mesh", "--pin", "--pin-box", "--frames", "--dt", "--integrator", "--substeps",
+        "--mass", "--stiffness", "--damping", "--gravity", "--tolerance", "--out"}) {
     EXPECT_NE(r.out.find(option), std::string::npos) << option;
   }
 }

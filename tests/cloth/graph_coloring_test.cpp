@@ -16,15 +16,15 @@ ClothDesc grid_with_bends(int cells) {
   ClothDesc desc = make_grid_cloth({.cells = cells});
   for (int i = 0; i <= cells; ++i) {
     for (int j = 0; j + 2 <= cells; ++j) {
-      desc.bends.push_back({grid_index(cells, i, j), grid_index(cells, i, j + 1),
-                            grid_index(cells, i, j + 2), 10.0});
-      desc.bends.push_back({grid_index(cells, j, i), grid_index(cells, j + 1, i),
-                            grid_index(cells, j + 2, i), 10.0});
+      desc.bends.push_back(line_bend(grid_index(cells, i, j), grid_index(cells, i, j + 1),
+                                     grid_index(cells, i, j + 2), 10.0));
+      desc.bends.push_back(line_bend(grid_index(cells, j, i), grid_index(cells, j + 1, i),
+                                     grid_index(cells, j + 2, i), 10.0));
     }
   }
   // One along a diagonal, whose outer pair no spring joins.
   desc.bends.push_back(
-      {grid_index(cells, 0, 0), grid_index(cells, 1, 1), grid_index(cells, 2, 2), 5.0});
+      line_bend(grid_index(cells, 0, 0), grid_index(cells, 1, 1), grid_index(cells, 2, 2), 5.0));
   return desc;
 }
 
@@ -65,7 +65,8 @@ TEST(GraphColoring, ClothColouringIsValidAndDeterministic) {
     EXPECT_TRUE(is_valid_coloring(coloring, edges));
     // No two particles of one colour share a spring or a bend, checked element by element.
     for (const auto& [a, b] : model.springs) EXPECT_NE(coloring.color[a], coloring.color[b]);
-    for (const auto& [a, b, c] : model.bends) {
+    for (const auto& bend : model.bends) {
+      const int a = bend[0], b = bend[1], c = bend[2];
       EXPECT_NE(coloring.color[a], coloring.color[b]);
       EXPECT_NE(coloring.color[b], coloring.color[c]);
       EXPECT_NE(coloring.color[a], coloring.color[c]);

@@ -14,11 +14,16 @@ namespace {
 class IncrementalPotentialTest : public testing::Test {
  protected:
   void SetUp() override {
-    // With bends along a grid line (its pairs are springs) and along a diagonal (its outer
-    // pair is not: build_cloth adds a coupling-only spring for it).
+    // With bends along a grid line (its pairs are springs), along a diagonal (its outer
+    // pair is not: build_cloth adds a coupling-only spring for it), and a four-particle bend
+    // with unequal weights (a mesh's edge element, one of its pairs joined by no spring).
     ClothDesc desc = make_grid_cloth({.cells = 3, .damping = 0.7});
-    desc.bends = {{grid_index(3, 1, 0), grid_index(3, 1, 1), grid_index(3, 1, 2), 40.0},
-                  {grid_index(3, 0, 0), grid_index(3, 1, 1), grid_index(3, 2, 2), 25.0}};
+    desc.bends = {
+        line_bend(grid_index(3, 1, 0), grid_index(3, 1, 1), grid_index(3, 1, 2), 40.0),
+        line_bend(grid_index(3, 0, 0), grid_index(3, 1, 1), grid_index(3, 2, 2), 25.0),
+        {{grid_index(3, 1, 1), grid_index(3, 2, 1), grid_index(3, 2, 2), grid_index(3, 1, 0)},
+         {0.7, 1.3, -1.1, -0.9},
+         30.0}};
     auto built = build_cloth(desc);
     ASSERT_TRUE(built);
     model = built->model;

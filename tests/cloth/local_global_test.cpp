@@ -32,10 +32,10 @@ ClothSimulator simulator(const ClothDesc& desc, const IntegratorSettings& settin
 void add_bends(ClothDesc& desc, int cells, double stiffness) {
   for (int i = 0; i <= cells; ++i) {
     for (int j = 1; j < cells; ++j) {
-      desc.bends.push_back({grid_index(cells, i, j - 1), grid_index(cells, i, j),
-                            grid_index(cells, i, j + 1), stiffness});
-      desc.bends.push_back({grid_index(cells, j - 1, i), grid_index(cells, j, i),
-                            grid_index(cells, j + 1, i), stiffness});
+      desc.bends.push_back(line_bend(grid_index(cells, i, j - 1), grid_index(cells, i, j),
+                                     grid_index(cells, i, j + 1), stiffness));
+      desc.bends.push_back(line_bend(grid_index(cells, j - 1, i), grid_index(cells, j, i),
+                                     grid_index(cells, j + 1, i), stiffness));
     }
   }
 }

@@ -78,9 +78,9 @@ std::vector<Scene> scenes() {
   for (int i = 0; i <= 6; ++i) {
     for (int j = 0; j + 2 <= 6; ++j) {
       crumpled.bends.push_back(
-          {grid_index(6, i, j), grid_index(6, i, j + 1), grid_index(6, i, j + 2), 1e3});
+          line_bend(grid_index(6, i, j), grid_index(6, i, j + 1), grid_index(6, i, j + 2), 1e3));
       crumpled.bends.push_back(
-          {grid_index(6, j, i), grid_index(6, j + 1, i), grid_index(6, j + 2, i), 1e3});
+          line_bend(grid_index(6, j, i), grid_index(6, j + 1, i), grid_index(6, j + 2, i), 1e3));
     }
   }
   return {{"crumpled 7 x 7, k 1e4, bends, dashpots", crumpled},

@@ -28,9 +28,9 @@ ClothDesc bent_damped_cloth(double stiffness, double mass = 1.0) {
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j + 2 <= n; ++j) {
       desc.bends.push_back(
-          {grid_index(n, i, j), grid_index(n, i, j + 1), grid_index(n, i, j + 2), 30.0});
+          line_bend(grid_index(n, i, j), grid_index(n, i, j + 1), grid_index(n, i, j + 2), 30.0));
       desc.bends.push_back(
-          {grid_index(n, j, i), grid_index(n, j + 1, i), grid_index(n, j + 2, i), 30.0});
+          line_bend(grid_index(n, j, i), grid_index(n, j + 1, i), grid_index(n, j + 2, i), 30.0));
     }
   }
   return desc;

@@ -23,16 +23,28 @@ struct SpringDesc {
   double stiffness = 100.0;   ///< k > 0 (force per unit length); lab range 10..300, default 100
 };
 
-/// A bending element over three particles a, b, c along a line of the sheet (b in the middle):
-/// E = 1/2 stiffness |x_a - 2 x_b + x_c|^2, the squared discrete curvature of the line, zero
-/// for any rigid motion of a straight line, with a constant Hessian (a quadratic bending model
-/// in the spirit of Bergou et al. 2006, "A quadratic bending model for inextensible surfaces").
-/// For a sheet with bending stiffness B (N m) and spacing s, stiffness = B / s^2 (N/m) gives
-/// 1/2 B kappa^2 per unit area (see material.h).
+/// A bending element over three or four particles with constant weights w:
+/// E = 1/2 stiffness |sum_i w_i x_i|^2, a quadratic bending energy with a constant Hessian
+/// (Bergou et al. 2006, "A quadratic bending model for inextensible surfaces"; derivatives in
+/// bend_energy.h). The weights sum to zero, so translations cost nothing.
+/// - The grid's element (line_bend): three particles a, b, c along a line of the sheet, b in the
+///   middle, w = (1, -2, 1): the squared discrete curvature of the line. For a sheet with
+///   bending stiffness B (N m) and spacing s, stiffness = B / s^2 gives 1/2 B kappa^2 per unit
+///   area (see material.h).
+/// - A mesh's element (mesh_cloth.h): the four particles around an interior edge with Bergou's
+///   cotangent weights.
 struct BendDesc {
-  int a = 0, b = 0, c = 0;  ///< distinct particle indices; b is the middle one
-  double stiffness = 0.0;   ///< N/m, in kStiffnessRange
+  /// Distinct particle indices; the last one -1 for a three-particle bend.
+  std::array<int, 4> particles{-1, -1, -1, -1};
+  /// w_i, finite, summing to zero (to rounding); 0 in an unused slot. Dimensionless.
+  std::array<double, 4> weights{};
+  double stiffness = 0.0;  ///< c, N/m, in kStiffnessRange
 };
+
+/// The grid's line element over a, b (the middle one), c: weights (1, -2, 1).
+inline BendDesc line_bend(int a, int b, int c, double stiffness) {
+  return {{a, b, c, -1}, {1.0, -2.0, 1.0, 0.0}, stiffness};
+}
 
 /// Editable description of a cloth.
 struct ClothDesc {
@@ -59,12 +71,15 @@ struct ClothModel {
   /// no spring joins: it carries the bend's Hessian blocks (solvers store one 3x3 block per
   /// spring), no force and no dashpot.
   std::vector<std::array<int, 2>> springs;
-  std::vector<double> rest_length;        ///< per spring
-  std::vector<double> stiffness;          ///< per spring; 0 only for the bends' coupling springs
-  std::vector<std::array<int, 3>> bends;  ///< per bend: particles a, b (middle), c
-  std::vector<double> bend_stiffness;     ///< per bend
-  /// Per bend: the springs joining (a, b), (b, c) and (a, c), which hold its Hessian blocks.
-  std::vector<std::array<int, 3>> bend_springs;
+  std::vector<double> rest_length;  ///< per spring
+  std::vector<double> stiffness;    ///< per spring; 0 only for the bends' coupling springs
+  /// Per bend: its 3 or 4 particles (an unused last slot -1), their weights and stiffness.
+  std::vector<std::array<int, 4>> bends;
+  std::vector<std::array<double, 4>> bend_weights;
+  std::vector<double> bend_stiffness;
+  /// Per bend: the springs joining its particle pairs in kBendPairs order (bend_energy.h),
+  /// which hold its Hessian blocks; -1 for a pair with an unused slot.
+  std::vector<std::array<int, 6>> bend_springs;
   std::vector<std::array<int, 3>> triangles;
   double gravity = 0.3;
   double damping = 0.2;

@@ -23,7 +23,8 @@ struct ElementSchedule {
   bool parallel = false;           ///< same-parity segments touch disjoint particles
 
   ElementSchedule() = default;
-  /// `elements[e]` lists element e's particles (indices below particle_count).
+  /// `elements[e]` lists element e's particles (indices below particle_count; the first one
+  /// used, -1 marks an unused slot).
   template <class Elements>
   ElementSchedule(const Elements& elements, int particle_count);
 
@@ -41,6 +42,7 @@ ElementSchedule::ElementSchedule(const Elements& elements, int particle_count) {
   for (const auto& element : elements) {
     int lo = element[0], hi = element[0];
     for (int p : element) {
+      if (p < 0) continue;  // an unused slot (a three-particle bend)
       lo = p < lo ? p : lo;
       hi = p > hi ? p : hi;
     }

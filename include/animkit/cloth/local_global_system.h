@@ -3,7 +3,7 @@
 // mass-spring systems", eq. 10) for the whole incremental potential g, and its Cholesky factor.
 // One N x N matrix (one row per particle) serves the x, y and z coordinates alike:
 //   P(h) = S + C / h + M / h^2,
-//   S = sum_springs k (e_a - e_b)(e_a - e_b)^T + sum_bends c w w^T   (w = (1, -2, 1) on a, b, c)
+//   S = sum_springs k (e_a - e_b)(e_a - e_b)^T + sum_bends c w w^T   (w: the bend's weights)
 //   C = sum_springs with a dashpot  c_damping (e_a - e_b)(e_a - e_b)^T,   M = diag(masses).
 // P majorizes the Hessian of g everywhere: a spring's block is k [u u^T + t (I - u u^T)] with
 // t = 1 - L/l < 1, so <= k I; a dashpot's is (c/h) u u^T <= (c/h) I; bends and inertia are

@@ -50,7 +50,7 @@ class VertexBlockDescent final : public ClothIntegrator {
     int spring, other;
   };
   struct IncidentBend {
-    int bend, slot;  // slot: the particle's place (0, 1, 2) in the bend
+    int bend, slot;  // slot: the particle's place (0..3) in the bend
   };
   void sweep(SweepTotals& totals);
   void update_particle(int i, SweepTotals& totals);

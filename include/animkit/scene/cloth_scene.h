@@ -13,8 +13,8 @@
 namespace animkit {
 
 struct ClothSceneOptions {
-  GridClothOptions grid;          ///< the lab's cloth by default
-  SimulationOptions simulation;   ///< implicit Euler with PCG by default
+  GridClothOptions grid;         ///< the lab's cloth by default
+  SimulationOptions simulation;  ///< implicit Euler with PCG by default
   /// Seconds per frame, > 0: the lab's choice, the frame's duration (a 60 Hz screen), as the
   /// CLI's --dt default.
   double time_step = 1.0 / 60.0;
@@ -49,6 +49,13 @@ Eigen::AlignedBox3d cloth_focus_bounds(const GridClothOptions& grid, const Cloth
 /// Where a grid cloth's floor goes: below the sheet hanging straight down from its pins,
 /// stretched by gravity, so the cloth never passes through the grid.
 double cloth_floor_height(const GridClothOptions& grid);
+
+/// The same for any cloth (e.g. cut from a mesh), from its description: the rest shape's box,
+/// extended down from its lowest pin (or its lowest point, without pins) by 1.3 times the
+/// shape's largest side, so a sheet hanging from its pins stays in the picture. For a grid's
+/// description these give the grid overloads' box and floor.
+Eigen::AlignedBox3d cloth_focus_bounds(const ClothDesc& desc, const ClothState& state);
+double cloth_floor_height(const ClothDesc& desc);
 
 /// The direction pictures of the cloth are taken from: facing the hanging sheet's front
 /// (orange) side, a little from above.
