@@ -99,7 +99,7 @@ Result<Collider> Collider::create(const ColliderDesc& desc, double t) {
   auto model = std::make_shared<ColliderModel>();
   model->desc = desc;
   model->surface = collider_surface(desc.shape, desc.tessellation);
-  model->edges = mesh_edges(model->surface);
+  model->edges = surface_edges(model->surface);
   model->surface_bounds.setEmpty();
   for (const Vec3& v : model->surface.vertices) model->surface_bounds.extend(v);
   Collider collider(std::move(model));

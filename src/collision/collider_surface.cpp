@@ -168,7 +168,7 @@ TriangleMesh collider_surface(const ColliderShape& shape, int tessellation) {
   return std::visit(Build{level}, shape);
 }
 
-std::vector<std::array<int, 2>> mesh_edges(const TriangleMesh& mesh) {
+std::vector<std::array<int, 2>> surface_edges(const TriangleMesh& mesh) {
   std::vector<std::array<int, 2>> edges;
   edges.reserve(3 * mesh.triangles.size());
   for (const Triangle& t : mesh.triangles) {

@@ -28,7 +28,7 @@ void expect_closed(const TriangleMesh& mesh, const std::string& what) {
   }
   // Watertight and a sphere topologically: V - E + F = 2.
   const auto v = static_cast<long>(mesh.vertices.size());
-  const auto e = static_cast<long>(mesh_edges(mesh).size());
+  const auto e = static_cast<long>(surface_edges(mesh).size());
   const auto f = static_cast<long>(mesh.triangles.size());
   EXPECT_EQ(v - e + f, 2) << what;
   EXPECT_EQ(2 * e, 3 * f) << what;
@@ -155,7 +155,7 @@ TEST(MeshEdges, EachEdgeOnceSorted) {
   const TriangleMesh tetrahedron{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
                                  {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
   const std::vector<std::array<int, 2>> expected = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-  EXPECT_EQ(mesh_edges(tetrahedron), expected);
+  EXPECT_EQ(surface_edges(tetrahedron), expected);
 }
 
 }  // namespace

@@ -40,7 +40,7 @@ std::optional<Error> validate_colliders(const std::vector<ColliderDesc>& collide
 struct ColliderModel {
   ColliderDesc desc;
   TriangleMesh surface;                   ///< collider_surface(shape), local frame
-  std::vector<std::array<int, 2>> edges;  ///< mesh_edges(surface)
+  std::vector<std::array<int, 2>> edges;  ///< surface_edges(surface)
   Eigen::AlignedBox3d surface_bounds;     ///< of the surface's vertices, local frame
 };
 

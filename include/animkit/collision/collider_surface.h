@@ -28,6 +28,6 @@ TriangleMesh collider_surface(const ColliderShape& shape, int tessellation);
 
 /// Each undirected edge of the mesh once, as (smaller index, larger index), sorted: the edges
 /// edge-edge contact runs over.
-std::vector<std::array<int, 2>> mesh_edges(const TriangleMesh& mesh);
+std::vector<std::array<int, 2>> surface_edges(const TriangleMesh& mesh);
 
 }  // namespace animkit
