@@ -2,12 +2,14 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "animkit/cloth/cloth_run.h"
@@ -21,8 +23,10 @@
 #include "animkit/core/validation.h"
 #include "animkit/io/atomic_write.h"
 #include "animkit/io/cloth_report.h"
+#include "animkit/io/collider_export.h"
 #include "animkit/io/point_cache.h"
 #include "animkit/scene/cloth_scene.h"
+#include "animkit/scene/collider_drawing.h"
 #include "cli_errors.h"
 #include "run_output.h"
 
@@ -31,6 +35,7 @@ namespace animkit::cli {
 namespace {
 
 constexpr int kMaxFrames = 1'000'000;
+constexpr int kContactNewtonIterations = 300;
 
 // "frame 120/600, 1.23 ms/step" on one rewritten line, only when stderr is a terminal.
 class ProgressLine {
@@ -155,8 +160,15 @@ int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
     set_tolerance(options.integrator, args.tolerance);
   }
   options.substeps = args.substeps;
+  // An impact takes Newton more iterations than a free cloth: continuous collision detection
+  // shortens its steps while new parts of the cloth arrive at a collider.
+  if (auto* newton = std::get_if<NewtonSettings>(&options.integrator);
+      newton && args.world.any_contact())
+    newton->max_iterations = std::max(newton->max_iterations, kContactNewtonIterations);
   auto sim = ClothSimulator::create(*cloth, options);
   if (!sim) return report_error(sim.error().message);
+  const auto colliders = add_world(*sim, args.world);
+  if (!colliders) return report_error(colliders.error().message);
 
   // Opened before the run, so a missing OpenGL or ffmpeg stops it before any file is written.
   PictureArgs picture_args = args.pictures;
@@ -166,14 +178,16 @@ int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
   // One camera for the whole run: the sheet flat and hanging straight down both fit.
   const Eigen::AlignedBox3d focus = from_mesh ? cloth_focus_bounds(*cloth, sim->state())
                                               : cloth_focus_bounds(args.grid, sim->state());
-  const double floor_height =
-      from_mesh ? cloth_floor_height(*cloth) : cloth_floor_height(args.grid);
+  const double floor_height = args.world.ground ? *args.world.ground
+                              : from_mesh       ? cloth_floor_height(*cloth)
+                                                : cloth_floor_height(args.grid);
   const OrbitCamera camera =
       OrbitCamera::framing(focus, pictures->aspect(), kClothPictureYaw, kClothPicturePitch);
   DrawList picture;
   const auto describe_state = [&] {
     picture.clear();
     describe_cloth(picture, sim->model(), sim->state(), {.floor_height = floor_height});
+    describe_colliders(picture, *colliders, 0.0);
   };
   if (pictures->take_video_frame()) {
     describe_state();
@@ -237,6 +251,11 @@ int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
       if (auto ok = cache->finish(); !ok) return report_error(ok.error().message);
       if (auto ok = write_file_atomic(out / "cloth.obj", cloth_obj(sim->model(), rest)); !ok) {
         return report_error(ok.error().message);
+      }
+      // The colliders as Blender opens them beside the cloth (they do not move here).
+      if (!colliders->empty()) {
+        if (auto ok = write_file_atomic(out / "colliders.obj", colliders_obj(*colliders, 0.0)); !ok)
+          return report_error(ok.error().message);
       }
     }
     if (auto ok = write_file_atomic(out / "metrics.json", cloth_metrics_json(info, steps)); !ok) {
@@ -319,6 +338,7 @@ std::function<int()> add_cloth_command(CLI::App& app) {
       ->add_option("--tolerance", args->tolerance,
                    "Newton stops when the gradient norm is this fraction of its start (0..1)")
       ->capture_default_str();
+  add_world_options(*cloth, args->world);
   cloth->add_option("--out", args->out,
                     "Folder for metrics.json, cloth.obj, cloth.pc2 and final.png (created if "
                     "needed; replaced whole when the run ends, see the README)");

@@ -10,6 +10,7 @@
 #include "animkit/cloth/integrator_registry.h"
 #include "mesh_cloth_args.h"
 #include "picture_output.h"
+#include "world_args.h"
 
 namespace animkit::cli {
 
@@ -17,6 +18,7 @@ namespace animkit::cli {
 struct ClothArgs {
   GridClothOptions grid;  ///< the lab's cloth by default
   MeshClothArgs mesh;     ///< --mesh: a cloth cut from an OBJ mesh instead of the grid
+  WorldArgs world;        ///< colliders, ground and wind
   /// The grid-only options given on the command line (--grid, --size): refused with --mesh.
   std::vector<std::string> grid_options_given;
   int frames = 300;

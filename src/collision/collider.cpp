@@ -118,7 +118,7 @@ void Collider::set_time(double t) {
 }
 
 void Collider::world_vertices_at(double t, std::vector<Vec3>& out) const {
-  const Pose pose = pose_at(model_->desc.motion, t);
+  const RigidPose pose = pose_at(model_->desc.motion, t);
   const auto& local = model_->surface.vertices;
   out.resize(local.size());
   for (std::size_t i = 0; i < local.size(); ++i) out[i] = pose.to_world(local[i]);

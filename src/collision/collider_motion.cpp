@@ -38,7 +38,7 @@ Eigen::AngleAxisd segment_turn(const Keyframe& a, const Keyframe& b) {
   return Eigen::AngleAxisd(qb * qa.conjugate());
 }
 
-Pose keyframe_pose(const Keyframe& k) {
+RigidPose keyframe_pose(const Keyframe& k) {
   return {k.position, k.rotation.normalized()};
 }
 
@@ -70,8 +70,8 @@ FrameVelocity frame_velocity(const KeyframedMotion& m, double t) {
   return {(b.position - a.position) / duration, turn.axis() * (turn.angle() / duration)};
 }
 
-Pose pose_of(const ScriptedMotion& m, double t) {
-  Pose pose{m.initial.position + m.linear_velocity * t, m.initial.rotation.normalized()};
+RigidPose pose_of(const ScriptedMotion& m, double t) {
+  RigidPose pose{m.initial.position + m.linear_velocity * t, m.initial.rotation.normalized()};
   const double speed = m.angular_velocity.norm();
   if (speed > 0.0) {
     pose.rotation = Quat(Eigen::AngleAxisd(speed * t, m.angular_velocity / speed)) * pose.rotation;
@@ -79,7 +79,7 @@ Pose pose_of(const ScriptedMotion& m, double t) {
   return pose;
 }
 
-Pose pose_of(const KeyframedMotion& m, double t) {
+RigidPose pose_of(const KeyframedMotion& m, double t) {
   const auto& keys = m.keyframes;
   if (keys.empty()) return {};
   if (t <= keys.front().time) return keyframe_pose(keys.front());
@@ -124,12 +124,12 @@ std::optional<Error> validate_motion(const ColliderMotion& motion) {
   return std::visit([](const auto& m) { return validate(m); }, motion);
 }
 
-Pose pose_at(const ColliderMotion& motion, double t) {
+RigidPose pose_at(const ColliderMotion& motion, double t) {
   return std::visit([t](const auto& m) { return pose_of(m, t); }, motion);
 }
 
 Vec3 point_velocity(const ColliderMotion& motion, double t, const Vec3& world_point) {
-  const Pose pose = pose_at(motion, t);
+  const RigidPose pose = pose_at(motion, t);
   const FrameVelocity v = std::visit([t](const auto& m) { return frame_velocity(m, t); }, motion);
   return v.linear + v.angular.cross(world_point - pose.position);
 }

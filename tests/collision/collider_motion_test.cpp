@@ -44,7 +44,7 @@ TEST(ColliderMotion, ScriptedMotionIsTheClosedForm) {
   const Vec3 axis = m.angular_velocity / speed;
   const Vec3 local(0.2, -0.7, 0.45);
   for (double t : {-0.8, 0.0, 0.3, 1.0, 2.5}) {
-    const Pose pose = pose_at(m, t);
+    const RigidPose pose = pose_at(m, t);
     EXPECT_TRUE(pose.position.isApprox(m.initial.position + t * m.linear_velocity, 1e-15));
     // A material point turns about the moving origin by |w| t about w.
     const Vec3 expected = pose.position + rodrigues(m.initial.rotation * local, axis, speed * t);
@@ -61,7 +61,7 @@ TEST(ColliderMotion, ZeroVelocitiesStayPut) {
   m.initial.position = Vec3(1, 2, 3);
   m.initial.rotation = Quat(Eigen::AngleAxisd(0.4, Vec3::UnitZ()));
   for (double t : {-5.0, 0.0, 7.0}) {
-    const Pose pose = pose_at(m, t);
+    const RigidPose pose = pose_at(m, t);
     EXPECT_EQ(pose.position, m.initial.position);
     EXPECT_TRUE(pose.rotation.isApprox(m.initial.rotation, 1e-15));
     EXPECT_EQ(point_velocity(m, t, Vec3(4, 5, 6)), Vec3::Zero());
@@ -71,14 +71,14 @@ TEST(ColliderMotion, ZeroVelocitiesStayPut) {
 TEST(ColliderMotion, KeyframesInterpolateAndClamp) {
   const KeyframedMotion m = three_keys();
   for (const Keyframe& k : m.keyframes) {
-    const Pose pose = pose_at(m, k.time);
+    const RigidPose pose = pose_at(m, k.time);
     EXPECT_TRUE(pose.position.isApprox(k.position, 1e-15));
     EXPECT_NEAR(rotation_angle_between(pose.rotation, k.rotation), 0.0, 1e-7);
   }
   // Halfway through a segment: the mean position and half the turn, as Eigen's slerp.
   const Keyframe& a = m.keyframes[1];
   const Keyframe& b = m.keyframes[2];
-  const Pose half = pose_at(m, 1.75);
+  const RigidPose half = pose_at(m, 1.75);
   EXPECT_TRUE(half.position.isApprox(0.5 * (a.position + b.position), 1e-15));
   EXPECT_NEAR(rotation_angle_between(half.rotation, a.rotation),
               0.5 * rotation_angle_between(a.rotation, b.rotation), 1e-12);

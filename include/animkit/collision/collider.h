@@ -60,7 +60,7 @@ class Collider {
   /// Moves the collider to its pose at time t (s, finite) and updates the world vertices.
   void set_time(double t);
   double time() const { return time_; }
-  const Pose& pose() const { return pose_; }
+  const RigidPose& pose() const { return pose_; }
   /// The surface's vertices at time(), world space, in the model's surface vertex order.
   const std::vector<Vec3>& world_vertices() const { return world_vertices_; }
 
@@ -79,7 +79,7 @@ class Collider {
   explicit Collider(std::shared_ptr<const ColliderModel> model);
   std::shared_ptr<const ColliderModel> model_;
   double time_ = 0.0;
-  Pose pose_;
+  RigidPose pose_;
   std::vector<Vec3> world_vertices_;
 };
 

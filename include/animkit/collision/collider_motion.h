@@ -11,7 +11,7 @@
 namespace animkit {
 
 /// A rigid placement of a local frame: world = rotation * local + position.
-struct Pose {
+struct RigidPose {
   Vec3 position = Vec3::Zero();      ///< world space, m: where the local origin is
   Quat rotation = Quat::Identity();  ///< local to world, unit
 
@@ -23,7 +23,7 @@ struct Pose {
 /// exp(w t) q0 (turning about the world axis w / |w| by |w| t, about the collider's own moving
 /// origin). All zero velocities (the default) is a static collider.
 struct ScriptedMotion {
-  Pose initial;                          ///< the pose at t = 0
+  RigidPose initial;                          ///< the pose at t = 0
   Vec3 linear_velocity = Vec3::Zero();   ///< world space, m/s, finite
   Vec3 angular_velocity = Vec3::Zero();  ///< world space, rad/s, finite
 };
@@ -49,7 +49,7 @@ using ColliderMotion = std::variant<ScriptedMotion, KeyframedMotion>;
 std::optional<Error> validate_motion(const ColliderMotion& motion);
 
 /// Where the collider's local frame is at time t (s, finite; any sign).
-Pose pose_at(const ColliderMotion& motion, double t);
+RigidPose pose_at(const ColliderMotion& motion, double t);
 
 /// The velocity (world space, m/s) at time t of the collider's material point that is at
 /// `world_point` at that time: v + w x (x - c) for the frame's linear velocity v, angular
