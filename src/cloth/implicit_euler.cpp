@@ -157,20 +157,16 @@ double ImplicitEuler::start_substep(const ClothState& state, double h,
   auto t = StageClock::now();
   potential_.prepare(state, h, external_forces);
   x_ = potential_.predicted();
+  report.ms_gradient += ms_since(t);  // the prediction, counted with the gradient
   if (potential_.has_terms()) {
+    t = StageClock::now();
     trial_ = x_ - state.positions;
     const double bound = potential_.max_step(state.positions, trial_);
     report.step_bound_min = std::min(report.step_bound_min, bound);
     if (bound < 1.0) x_ = state.positions + bound * trial_;
     report.ms_step_bound += ms_since(t);
-    t = StageClock::now();
-    potential_.update_terms(x_);
-    report.ms_term_updates += ms_since(t);
-    t = StageClock::now();
   }
-  potential_.gradient(x_, gradient_);
-  report.ms_gradient += ms_since(t);
-  return gradient_.norm();
+  return arrive_at_iterate(report);
 }
 
 // Hessian and Newton direction dx: the exact Hessian first unless always projecting; redone
@@ -257,9 +253,15 @@ void ImplicitEuler::extend_projected_step(double& decrease, double& alpha) {
   }
 }
 
-// x += the accepted step; the terms see the new iterate; returns |grad g| there.
+// x += the accepted step; returns |grad g| there.
 double ImplicitEuler::accept_step(StepReport& report) {
   x_ += trial_;
+  return arrive_at_iterate(report);
+}
+
+// At a new iterate x: the terms see it (e.g. gather contact pairs), then grad g there; returns
+// |grad g|.
+double ImplicitEuler::arrive_at_iterate(StepReport& report) {
   auto t = StageClock::now();
   if (potential_.has_terms()) {
     potential_.update_terms(x_);

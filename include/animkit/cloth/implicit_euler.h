@@ -48,6 +48,7 @@ class ImplicitEuler final : public ClothIntegrator {
                                     StepReport& report);
   void extend_projected_step(double& decrease, double& alpha);
   double accept_step(StepReport& report);
+  double arrive_at_iterate(StepReport& report);
 
   // Shared and immutable: the reference below stays valid however this integrator moves.
   std::shared_ptr<const ClothModel> model_owner_;

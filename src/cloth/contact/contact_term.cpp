@@ -51,7 +51,8 @@ struct ContactTerm::Impl {
 
   Vec3 position(const Eigen::VectorXd& x, int v) const {
     const int n = model->particle_count();
-    return v < n ? Vec3(x.segment<3>(3 * v)) : Vec3(geometry.obstacle_positions.segment<3>(3 * (v - n)));
+    return v < n ? Vec3(x.segment<3>(3 * v))
+                 : Vec3(geometry.obstacle_positions.segment<3>(3 * (v - n)));
   }
   std::array<Vec3, 4> positions(const Eigen::VectorXd& x, const ContactPair& pair) const {
     std::array<Vec3, 4> p;
@@ -59,6 +60,16 @@ struct ContactTerm::Impl {
     return p;
   }
   double ground_height() const { return ground.value_or(0.0); }
+
+  // Calls visit(pair, derivatives) for every pair within dhat at x (the barrier without kappa).
+  template <class Visit>
+  void for_each_active(const Eigen::VectorXd& x, Visit visit) const {
+    for (const ContactPair& pair : pairs) {
+      const std::array<Vec3, 4> p = positions(x, pair);
+      if (contact_distance_squared(pair, p, ground_height()) >= barrier.dhat()) continue;
+      visit(pair, contact_barrier_derivatives(pair, p, ground_height(), barrier));
+    }
+  }
 };
 
 ContactTerm::ContactTerm(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -158,28 +169,18 @@ double ContactTerm::difference(const Eigen::VectorXd& x, const Eigen::VectorXd& 
 
 void ContactTerm::add_gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const {
   const int n = impl_->model->particle_count();
-  for (const ContactPair& pair : impl_->pairs) {
-    const std::array<Vec3, 4> p = impl_->positions(x, pair);
-    if (contact_distance_squared(pair, p, impl_->ground_height()) >= impl_->barrier.dhat())
-      continue;
-    const StencilDerivatives<4> d =
-        contact_barrier_derivatives(pair, p, impl_->ground_height(), impl_->barrier);
+  impl_->for_each_active(x, [&](const ContactPair& pair, const StencilDerivatives<4>& d) {
     for (int i = 0; i < pair.vertex_count(); ++i) {
       const int v = pair.vertices[i];
       if (v < n) gradient.segment<3>(3 * v) += impl_->kappa * d.gradient.segment<3>(3 * i);
     }
-  }
+  });
 }
 
 void ContactTerm::add_hessian(const Eigen::VectorXd& x, bool /*projected: always*/,
                               std::vector<HessianBlock>& blocks) const {
   const int n = impl_->model->particle_count();
-  for (const ContactPair& pair : impl_->pairs) {
-    const std::array<Vec3, 4> p = impl_->positions(x, pair);
-    if (contact_distance_squared(pair, p, impl_->ground_height()) >= impl_->barrier.dhat())
-      continue;
-    const StencilDerivatives<4> d =
-        contact_barrier_derivatives(pair, p, impl_->ground_height(), impl_->barrier);
+  impl_->for_each_active(x, [&](const ContactPair& pair, const StencilDerivatives<4>& d) {
     // The cloth's rows and columns of the pair's PSD Hessian (a principal submatrix: PSD too).
     for (int i = 0; i < pair.vertex_count(); ++i) {
       if (pair.vertices[i] >= n) continue;
@@ -189,7 +190,7 @@ void ContactTerm::add_hessian(const Eigen::VectorXd& x, bool /*projected: always
                           impl_->kappa * d.hessian.block<3, 3>(3 * i, 3 * j)});
       }
     }
-  }
+  });
 }
 
 ContactStats ContactTerm::stats(const Eigen::VectorXd& x) const {
