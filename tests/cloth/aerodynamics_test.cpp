@@ -98,7 +98,8 @@ TEST(Aerodynamics, AFallingPlateReachesTheFlatPlatesTerminalSpeed) {
   EXPECT_NEAR((*air)->time(), 180 * kFrame, 1e-12);
 }
 
-// The mean x (across the pinned edge, which runs along z) of a 1 m cotton sheet after 2 s hanging from two corners in the given wind.
+// The mean x (across the pinned edge, which runs along z) of a 1 m cotton sheet after 2 s hanging
+// from two corners in the given wind.
 double mean_x_in_wind(const Vec3& wind) {
   GridClothOptions grid{.cells = 12, .size = 1.0, .gravity = 9.81};
   grid.material = ClothMaterial{};  // cotton's values

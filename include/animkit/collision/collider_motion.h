@@ -23,7 +23,7 @@ struct RigidPose {
 /// exp(w t) q0 (turning about the world axis w / |w| by |w| t, about the collider's own moving
 /// origin). All zero velocities (the default) is a static collider.
 struct ScriptedMotion {
-  RigidPose initial;                          ///< the pose at t = 0
+  RigidPose initial;                     ///< the pose at t = 0
   Vec3 linear_velocity = Vec3::Zero();   ///< world space, m/s, finite
   Vec3 angular_velocity = Vec3::Zero();  ///< world space, rad/s, finite
 };
