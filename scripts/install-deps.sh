@@ -29,7 +29,8 @@ packages=(
   libcgal-dev libbullet-dev
 )
 if [ "${1:-}" = "--fuzz" ]; then
-  packages=(clang-16 libclang-rt-16-dev)
+  # libomp: clang's OpenMP runtime, for the cloth solvers' threads in the fuzz build.
+  packages=(clang-16 libclang-rt-16-dev libomp-16-dev)
 fi
 
 missing=()
