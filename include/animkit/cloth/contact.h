@@ -73,8 +73,6 @@ class ContactTerm final : public EnergyTerm {
   void add_hessian(const Eigen::VectorXd& x, bool projected,
                    std::vector<HessianBlock>& blocks) const override;
 
-  /// Moves the obstacles (same meshes, new vertex positions) for the following steps.
-  Result<void> set_obstacle_vertices(const std::vector<TriangleMesh>& meshes);
   /// The barrier stiffness in use (J/m^4).
   double stiffness() const;
   /// Contacts at the last iterate.

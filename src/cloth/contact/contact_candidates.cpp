@@ -51,24 +51,6 @@ Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
   return g;
 }
 
-Result<void> update_obstacle_vertices(ContactGeometry& geometry,
-                                      const std::vector<TriangleMesh>& obstacles) {
-  std::size_t total = 0;
-  for (const TriangleMesh& mesh : obstacles) total += mesh.vertices.size();
-  if (3 * total != static_cast<std::size_t>(geometry.obstacle_positions.size())) {
-    return fail("the obstacles have " + std::to_string(total) + " vertices, not the " +
-                std::to_string(geometry.obstacle_positions.size() / 3) + " they were built with");
-  }
-  Eigen::Index next = 0;
-  for (const TriangleMesh& mesh : obstacles) {
-    for (const Vec3& v : mesh.vertices) {
-      if (!v.allFinite()) return fail("an obstacle vertex has a non-finite coordinate");
-      geometry.obstacle_positions.segment<3>(3 * next++) = v;
-    }
-  }
-  return {};
-}
-
 void set_cloth_rest_lengths(ContactGeometry& geometry, const Eigen::VectorXd& cloth_positions) {
   for (std::size_t e = 0; e < geometry.cloth.edges.size(); ++e) {
     const auto [a, b] = geometry.cloth.edges[e];

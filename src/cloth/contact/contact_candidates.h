@@ -30,9 +30,6 @@ struct ContactGeometry {
 Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
                                                const std::vector<TriangleMesh>& obstacles,
                                                bool self_contact);
-/// New positions for the obstacles' vertices (same meshes, same vertex counts).
-Result<void> update_obstacle_vertices(ContactGeometry& geometry,
-                                      const std::vector<TriangleMesh>& obstacles);
 /// The cloth's edges' rest lengths from `cloth_positions` (the obstacles' are their own).
 void set_cloth_rest_lengths(ContactGeometry& geometry, const Eigen::VectorXd& cloth_positions);
 

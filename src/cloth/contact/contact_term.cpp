@@ -113,10 +113,6 @@ double ContactTerm::stiffness() const {
   return impl_->kappa;
 }
 
-Result<void> ContactTerm::set_obstacle_vertices(const std::vector<TriangleMesh>& meshes) {
-  return update_obstacle_vertices(impl_->geometry, meshes);
-}
-
 void ContactTerm::prepare(const ClothState& state, double /*h*/) {
   // The edge-edge mollifier's thresholds come from rest lengths: the cloth's as it starts.
   if (!impl_->rest_lengths_known) {
