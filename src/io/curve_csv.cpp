@@ -7,6 +7,7 @@
 #include "animkit/core/quote.h"
 #include "animkit/io/file_bytes.h"
 #include "held_fp_exceptions.h"
+#include "text_lines.h"
 
 namespace animkit {
 
@@ -33,17 +34,11 @@ Result<Strokes> parse_curve_csv(std::string_view text, std::string_view name) {
   const std::string file(name);
   const HeldFloatingPointExceptions held;
   Strokes strokes(1);
-  int number = 0;
-  while (!text.empty()) {
-    const std::size_t newline = text.find('\n');
-    const std::string_view line = text.substr(0, newline);
-    text.remove_prefix(newline == std::string_view::npos ? text.size() : newline + 1);
-    ++number;
-    const std::string where = file + " line " + std::to_string(number);
-    // A NUL is refused, not read as the end of the line: it would hide what follows it.
-    if (line.find('\0') != std::string_view::npos) {
-      return fail(where + ": holds a NUL byte (not a text file?): " + quote_input(line));
-    }
+  TextLines lines(text, file);
+  while (auto next = lines.next()) {
+    if (!*next) return fail(next->error().message);
+    const std::string_view line = **next;
+    const std::string& where = lines.where();
     const std::string_view content = trim(line);
     if (content.empty()) {
       if (!strokes.back().empty()) strokes.emplace_back();  // pen up

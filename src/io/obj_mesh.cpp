@@ -10,6 +10,7 @@
 #include "animkit/core/quote.h"
 #include "animkit/io/file_bytes.h"
 #include "held_fp_exceptions.h"
+#include "text_lines.h"
 
 namespace animkit {
 
@@ -57,17 +58,11 @@ Result<TriangleMesh> parse_obj_mesh(std::string_view text, std::string_view name
   TriangleMesh mesh;
   std::vector<int> triangle_line;  // per triangle, its face's line (for index errors)
   std::vector<long> corners;
-  int number = 0;
-  while (!text.empty()) {
-    const std::size_t newline = text.find('\n');
-    const std::string_view line = text.substr(0, newline);
-    text.remove_prefix(newline == std::string_view::npos ? text.size() : newline + 1);
-    ++number;
-    const std::string where = file + " line " + std::to_string(number);
-    // A NUL is refused, not read as the end of the line: it would hide what follows it.
-    if (line.find('\0') != std::string_view::npos) {
-      return fail(where + ": holds a NUL byte (not a text file?): " + quote_input(line));
-    }
+  TextLines lines(text, file);
+  while (auto next = lines.next()) {
+    if (!*next) return fail(next->error().message);
+    const std::string_view line = **next;
+    const std::string& where = lines.where();
     std::string_view rest = line;
     const std::string_view keyword = next_token(rest);
     if (keyword == "v") {
@@ -120,7 +115,7 @@ Result<TriangleMesh> parse_obj_mesh(std::string_view text, std::string_view name
       for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
         mesh.triangles.push_back({static_cast<int>(corners[0]), static_cast<int>(corners[k]),
                                   static_cast<int>(corners[k + 1])});
-        triangle_line.push_back(number);
+        triangle_line.push_back(lines.number());
       }
     }
   }

@@ -64,7 +64,11 @@ Result<void> ContactPairFinder::gather(const ContactGeometry& g, const Eigen::Ve
                                        std::optional<double> ground,
                                        std::vector<ContactPair>& pairs) {
   pairs.clear();
-  end_ = step ? Eigen::VectorXd(x + *step) : x;
+  if (step) {
+    end_ = x + *step;  // sized once, reused
+  } else {
+    end_ = x;
+  }
   const MeshMotion cloth{g.cloth, x, end_};
   const MeshMotion obstacles{g.obstacles, g.obstacle_positions, g.obstacle_positions};
   const bool any_obstacle = !g.obstacles.triangles.empty();

@@ -47,6 +47,7 @@ struct ContactTerm::Impl {
   ContactGeometry geometry;  // the cloth's and the obstacles' primitives, one index space
   ContactPairFinder finder;
   std::vector<ContactPair> pairs;  // what value, gradient and Hessian sum over
+  mutable Eigen::VectorXd moved;   // difference()'s workspace
   bool rest_lengths_known = false;
 
   Vec3 position(const Eigen::VectorXd& x, int v) const {
@@ -151,7 +152,8 @@ double ContactTerm::value(const Eigen::VectorXd& x) const {
 
 double ContactTerm::difference(const Eigen::VectorXd& x, const Eigen::VectorXd& step) const {
   // Pair by pair, so a large barrier elsewhere does not swamp a small change.
-  const Eigen::VectorXd moved = x + step;
+  Eigen::VectorXd& moved = impl_->moved;
+  moved = x + step;  // sized once: the line search calls this every trial
   double sum = 0.0;
   for (const ContactPair& pair : impl_->pairs) {
     const double after = contact_barrier(pair, impl_->positions(moved, pair),
