@@ -26,16 +26,15 @@
 #include "animkit/io/collider_export.h"
 #include "animkit/io/point_cache.h"
 #include "animkit/scene/cloth_scene.h"
+#include "animkit/scene/cloth_scenes.h"
 #include "animkit/scene/collider_drawing.h"
 #include "cli_errors.h"
+#include "cloth_world_of.h"
 #include "run_output.h"
 
 namespace animkit::cli {
 
 namespace {
-
-constexpr int kMaxFrames = 1'000'000;
-constexpr int kContactNewtonIterations = 300;
 
 // "frame 120/600, 1.23 ms/step" on one rewritten line, only when stderr is a terminal.
 class ProgressLine {
@@ -70,25 +69,6 @@ std::string material_names() {
 
 namespace {
 
-// The grid to simulate: the lab's, or a physical sheet of the --material.
-Result<GridClothOptions> grid_of(const ClothArgs& args) {
-  GridClothOptions grid = args.grid;
-  if (args.material.empty() && !args.material_given) return grid;
-  const MaterialPreset* preset = find_material(args.material);
-  if (!preset) {
-    return fail("unknown material " + quote_input(args.material) +
-                " (expected one of: " + material_names() + ")");
-  }
-  if (!args.lab_options_given.empty()) {
-    return fail(args.lab_options_given.front() +
-                " sets the lab's per-particle cloth; --material sets masses and stiffnesses "
-                "from the material");
-  }
-  grid.material = preset->material;
-  if (!args.gravity_given) grid.gravity = 9.81;
-  return grid;
-}
-
 // "auto: implicit-pcg 1.2 ms/step, ... -> implicit-multigrid": what the trial measured.
 void print_integrator_trial(const IntegratorChoice& choice) {
   std::printf("auto:");
@@ -104,85 +84,46 @@ void print_integrator_trial(const IntegratorChoice& choice) {
   std::printf(" chose %.*s\n", static_cast<int>(choice.name.size()), choice.name.data());
 }
 
-// The cloth to simulate: the grid, or the --mesh with its pins. Checks the options first.
-Result<ClothDesc> cloth_of(const ClothArgs& args) {
-  if (args.mesh.mesh.empty()) {
-    if (!args.mesh.pins.empty() || !args.mesh.pin_boxes.empty()) {
-      return fail(std::string(args.mesh.pins.empty() ? "--pin-box" : "--pin") +
-                  " pins vertices of a --mesh; the grid pins the two corners of its first edge");
-    }
-    if (auto error = args.grid.validate()) return fail(error->message);
-    return make_grid_cloth(args.grid);
-  }
-  if (!args.grid_options_given.empty()) {
-    return fail(args.grid_options_given.front() +
-                " shapes the grid; --mesh gives the cloth's shape and size");
-  }
-  auto options = mesh_cloth_options(args.mesh, args.grid.material, args.grid.mass,
-                                    args.grid.stiffness, args.grid.damping, args.grid.gravity);
-  if (!options) return fail(options.error().message);
-  return make_mesh_cloth(*options);
-}
-
 }  // namespace
 
-int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
-                 const std::string& video, const std::function<Result<void>()>& commit) {
-  ClothArgs args = args_in;
-  auto grid = grid_of(args);
-  if (!grid) return report_error(grid.error().message);
-  args.grid = *grid;
-  const auto cloth = cloth_of(args);
-  if (!cloth) return report_error(cloth.error().message);
-  const bool from_mesh = !args.mesh.mesh.empty();
+int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const std::string& video,
+                 const std::function<Result<void>()>& commit) {
   if (!kTimeStepRange.contains(args.dt)) {
     return report_error(kTimeStepRange.refusal("--dt (seconds)", args.dt));
   }
-  if (args.frames < 1 || args.frames > kMaxFrames) {
-    return report_error("--frames must be between 1 and " + std::to_string(kMaxFrames) + ", got " +
-                        std::to_string(args.frames));
+  if (args.frames < 1 || args.frames > kMaxWorldFrames) {
+    return report_error("--frames must be between 1 and " + std::to_string(kMaxWorldFrames) +
+                        ", got " + std::to_string(args.frames));
   }
-  SimulationOptions options;
-  std::string integrator_name = args.integrator;
-  if (args.integrator == "auto") {
-    auto choice = choose_integrator(*cloth, args.dt, args.tolerance);
+  auto world_desc = world_of(args);
+  if (!world_desc) return report_error(world_desc.error().message);
+  const auto cloth = build_world_cloth(*world_desc);
+  if (!cloth) return report_error(cloth.error().message);
+  const double dt = world_desc->time_step;
+  if (args.integrator == "auto" && (args.scene.empty() || args.given("--integrator"))) {
+    const double tolerance =
+        tolerance_of(world_desc->simulation.integrator).value_or(args.tolerance);
+    auto choice = choose_integrator(*cloth, dt, tolerance);
     if (!choice) return report_error(choice.error().message);
     print_integrator_trial(*choice);
-    options.integrator = choice->settings;
-    integrator_name = choice->name;
-  } else {
-    const IntegratorEntry* integrator = find_integrator(args.integrator);
-    if (!integrator) {
-      return report_error("unknown integrator " + quote_input(args.integrator) +
-                          " (expected auto or one of: " + integrator_names() + ")");
-    }
-    options.integrator = integrator->defaults;
-    set_tolerance(options.integrator, args.tolerance);
+    world_desc->simulation.integrator = choice->settings;
   }
-  options.substeps = args.substeps;
-  // An impact takes Newton more iterations than a free cloth: continuous collision detection
-  // shortens its steps while new parts of the cloth arrive at a collider.
-  if (auto* newton = std::get_if<NewtonSettings>(&options.integrator);
-      newton && args.world.any_contact())
-    newton->max_iterations = std::max(newton->max_iterations, kContactNewtonIterations);
-  auto sim = ClothSimulator::create(*cloth, options);
-  if (!sim) return report_error(sim.error().message);
-  const auto colliders = add_world(*sim, args.world);
-  if (!colliders) return report_error(colliders.error().message);
+  const std::string integrator_name(integrator_entry(world_desc->simulation.integrator).name);
+  auto world = build_cloth_world(*world_desc);
+  if (!world) return report_error(world.error().message);
+  ClothSimulator* sim = &world->simulator;
+  const std::vector<Collider>* colliders = &world->colliders;
 
   // Opened before the run, so a missing OpenGL or ffmpeg stops it before any file is written.
   PictureArgs picture_args = args.pictures;
   picture_args.video = video;
-  auto pictures = PictureOutput::open(picture_args, !out.empty(), 1.0 / args.dt);
+  auto pictures = PictureOutput::open(picture_args, !out.empty(), 1.0 / dt);
   if (!pictures) return report_error(pictures.error().message);
-  // One camera for the whole run: the sheet flat and hanging straight down both fit.
-  const Eigen::AlignedBox3d focus = from_mesh ? cloth_focus_bounds(*cloth, sim->state())
-                                              : cloth_focus_bounds(args.grid, sim->state());
-  const double floor_height = args.world.ground ? *args.world.ground
-                              : from_mesh       ? cloth_floor_height(*cloth)
-                                                : cloth_floor_height(args.grid);
+  const ClothPictureFrame framing =
+      cloth_picture_frame(*world_desc, *cloth, sim->state(), world->colliders);
   const OrbitCamera camera =
-      OrbitCamera::framing(focus, pictures->aspect(), kClothPictureYaw, kClothPicturePitch);
+      OrbitCamera::framing(framing.focus, pictures->aspect(), kClothPictureYaw, kClothPicturePitch);
+  const double floor_height = framing.floor_height;
   DrawList picture;
   const auto describe_state = [&] {
     picture.clear();
@@ -206,7 +147,7 @@ int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
   }
 
   const ClothState rest = sim->state();  // for the OBJ: the mesh as it starts
-  ProgressLine progress(args.frames);
+  ProgressLine progress(world_desc->frames);
   // Each frame: a point-cache frame, a video frame, the progress line.
   const auto record_frame = [&](int frame, const ClothSimulator& s,
                                 const StepReport& step) -> Result<void> {
@@ -220,26 +161,14 @@ int run_cloth_in(const ClothArgs& args_in, const std::filesystem::path& out,
     progress.update(frame, step.ms);
     return {};
   };
-  auto run = run_cloth(*sim, args.frames, args.dt, record_frame);
+  auto run = run_cloth(*sim, world_desc->frames, dt, record_frame);
   if (!run) return report_error(run.error().message);
   const std::vector<StepReport>& steps = run->steps;
   const std::optional<std::string>& divergence = run->divergence;
   progress.done();
 
-  ClothRunInfo info{integrator_name,
-                    from_mesh ? 0 : args.grid.cells,
-                    sim->model().particle_count(),
-                    sim->model().spring_count(),
-                    args.dt,
-                    options.effective_substeps(),
-                    args.grid.mass,
-                    args.grid.stiffness,
-                    args.grid.damping,
-                    args.grid.gravity,
-                    args.tolerance,
-                    divergence,
-                    args.material,
-                    from_mesh ? 0.0 : args.grid.size};
+  ClothRunInfo info = run_info(*world_desc, *sim, integrator_name, args.scene);
+  info.divergence = divergence;
   if (cache) {
     // A diverged run's results are its metrics (where and how it failed) and no animation:
     // the unfinished cache is dropped with its writer.
@@ -297,6 +226,10 @@ std::function<int()> add_cloth_command(CLI::App& app) {
       "Simulates the lab's mass-spring cloth (an (N+1) x (N+1) grid pinned at two "
       "corners) and reports what each step did; --out writes metrics and an animation "
       "Blender opens (cloth.obj + cloth.pc2 for the Mesh Cache modifier).");
+  cloth->add_option("--scene", args->scene,
+                    "A whole scene: a built-in one (" + cloth_scene_names() +
+                        ") or a JSON scene file (see the README); --frames, --dt, --integrator, "
+                        "--tolerance and --substeps may replace its own");
   cloth->add_option("--grid", args->grid.cells, "Cells per side N (N + 1 particles per side)")
       ->capture_default_str();
   cloth->add_option("--size", args->grid.size, "Side of the square sheet (m with --material)")
@@ -346,11 +279,20 @@ std::function<int()> add_cloth_command(CLI::App& app) {
   return [args, cloth] {
     args->gravity_given = cloth->count("--gravity") > 0;
     args->material_given = cloth->count("--material") > 0;
+    for (const CLI::Option* option : cloth->get_options()) {
+      if (option->count() > 0) args->options_given.push_back(option->get_name());
+    }
     for (const char* option : {"--mass", "--stiffness", "--damping"}) {
       if (cloth->count(option) > 0) args->lab_options_given.emplace_back(option);
     }
     for (const char* option : {"--grid", "--size"}) {
       if (cloth->count(option) > 0) args->grid_options_given.emplace_back(option);
+    }
+    for (const char* option :
+         {"--grid", "--size", "--mesh", "--pin", "--pin-box", "--material", "--mass", "--stiffness",
+          "--damping", "--gravity", "--sphere", "--ground", "--thickness", "--no-self-contact",
+          "--wind", "--gust"}) {
+      if (cloth->count(option) > 0) args->world_options_given.emplace_back(option);
     }
     return run_cloth(*args);
   };

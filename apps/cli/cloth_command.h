@@ -1,8 +1,10 @@
 #pragma once
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "animkit/cloth/cloth_simulator.h"
@@ -32,6 +34,15 @@ struct ClothArgs {
   bool gravity_given = false;   ///< --gravity was on the command line (else 9.81 with a material)
   /// The lab-parameter options given on the command line (--mass, ...): a material sets them.
   std::vector<std::string> lab_options_given;
+  /// --scene: a built-in scene's name or a JSON scene file; empty: the options' own world.
+  std::string scene;
+  /// Every option given on the command line ("--frames"), for what a --scene lets replace.
+  std::vector<std::string> options_given;
+  /// The options given that describe the cloth or its world (refused with --scene).
+  std::vector<std::string> world_options_given;
+  bool given(std::string_view option) const {
+    return std::find(options_given.begin(), options_given.end(), option) != options_given.end();
+  }
   std::string out;  ///< empty: write no files
   PictureArgs pictures;
 };

@@ -2,9 +2,6 @@
 
 #include <memory>
 
-#include "animkit/cloth/aerodynamics.h"
-#include "animkit/cloth/contact.h"
-#include "animkit/collision/collider_surface.h"
 #include "animkit/core/quote.h"
 #include "cli_errors.h"
 
@@ -27,7 +24,7 @@ void add_world_options(CLI::App& command, WorldArgs& args) {
 
 namespace {
 
-Result<Collider> sphere_of(const std::string& text, int index) {
+Result<ColliderDesc> sphere_of(const std::string& text, int index) {
   const std::size_t comma = text.rfind(',');
   Vec3 center;
   char* end = nullptr;
@@ -41,48 +38,30 @@ Result<Collider> sphere_of(const std::string& text, int index) {
   desc.name = "sphere " + std::to_string(index + 1);
   desc.shape = SphereShape{radius};
   desc.motion = ScriptedMotion{.initial = {.position = center}};
-  return Collider::create(desc);
+  if (auto error = desc.validate()) return fail(error->message);
+  return desc;
 }
 
 }  // namespace
 
-Result<std::vector<Collider>> add_world(ClothSimulator& sim, const WorldArgs& args) {
-  std::vector<Collider> colliders;
+Result<void> apply_world_args(const WorldArgs& args, ClothWorldDesc& world) {
   for (std::size_t i = 0; i < args.spheres.size(); ++i) {
     auto sphere = sphere_of(args.spheres[i], static_cast<int>(i));
     if (!sphere) return fail(sphere.error().message);
-    colliders.push_back(std::move(*sphere));
+    world.colliders.push_back(std::move(*sphere));
   }
-  const auto model = std::make_shared<const ClothModel>(sim.model());
-  if (args.any_contact()) {
-    if (auto inside = find_particle_inside(sim.state().positions, colliders))
-      return fail(inside->message);
-    ContactObstacles obstacles{.meshes = {}, .ground_height = args.ground};
-    for (const Collider& c : colliders)
-      obstacles.meshes.push_back({c.world_vertices(), c.model().surface.triangles});
-    if (args.ground) {
-      for (int i = 0; i < model->particle_count(); ++i) {
-        if (sim.state().position(i).y() <= *args.ground)
-          return fail("particle " + std::to_string(i) + " starts on or below the ground");
-      }
-    }
-    auto contact = ContactTerm::create(
-        model, {.thickness = args.thickness, .self_contact = !args.no_self_contact},
-        std::move(obstacles));
-    if (!contact) return fail(contact.error().message);
-    if (auto ok = sim.add_energy_term(*contact); !ok) return fail(ok.error().message);
-  }
+  if (args.ground) world.ground = GroundDesc{.height = *args.ground};
+  world.contact.thickness = args.thickness;
+  world.contact.self_contact = !args.no_self_contact;
   if (!args.wind.empty() || !args.gust.empty()) {
     AirSettings air;
     if (!args.wind.empty() && !parse_vec3(args.wind, air.wind.velocity))
       return fail("--wind expects X,Y,Z in m/s, got " + quote_input(args.wind));
     if (!args.gust.empty() && !parse_vec3(args.gust, air.wind.gust))
       return fail("--gust expects X,Y,Z in m/s, got " + quote_input(args.gust));
-    auto term = AirTerm::create(*model, air);
-    if (!term) return fail(term.error().message);
-    if (auto ok = sim.add_energy_term(*term); !ok) return fail(ok.error().message);
+    world.air = air;
   }
-  return colliders;
+  return {};
 }
 
 }  // namespace animkit::cli

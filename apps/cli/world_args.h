@@ -1,14 +1,13 @@
 #pragma once
-// `animkit cloth`'s world: spheres and a ground the cloth cannot pass through (contact.h, IPC)
-// and the air it moves in (aerodynamics.h). Parsing and wiring only: the physics is the
-// library's energy terms.
+// `animkit cloth`'s world from the command line: spheres and a ground the cloth cannot pass
+// through (contact.h, IPC) and the air it moves in (aerodynamics.h). Parsing only: the library
+// builds the world (cloth_world.h).
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "animkit/cloth/cloth_simulator.h"
-#include "animkit/collision/collider.h"
+#include "animkit/cloth/cloth_world.h"
 #include "animkit/core/result.h"
 
 namespace animkit::cli {
@@ -26,8 +25,8 @@ struct WorldArgs {
 
 void add_world_options(CLI::App& command, WorldArgs& args);
 
-/// Adds the contact and air terms to `sim`; returns the colliders (for pictures and
-/// colliders.obj). Errors name the option, or the particle that starts inside a collider.
-Result<std::vector<Collider>> add_world(ClothSimulator& sim, const WorldArgs& args);
+/// Puts the options' spheres, ground, contact settings and air into `world`. Errors name the
+/// option.
+Result<void> apply_world_args(const WorldArgs& args, ClothWorldDesc& world);
 
 }  // namespace animkit::cli

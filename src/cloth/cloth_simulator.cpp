@@ -31,6 +31,7 @@ struct ClothSimulator::Impl {
   SimulationOptions options;
   std::unique_ptr<ClothIntegrator> integrator;
   std::optional<Eigen::VectorXd> external_forces;
+  std::vector<std::shared_ptr<EnergyTerm>> terms;  // also the integrator's, for their reports
   int steps = 0;
 };
 
@@ -96,6 +97,7 @@ Result<void> ClothSimulator::add_energy_term(std::shared_ptr<EnergyTerm> term) {
                 " cannot take extra energy terms such as " + std::string(term->name()) +
                 "; Newton's integrators (implicit-pcg, implicit-multigrid, implicit-direct) can");
   }
+  impl_->terms.push_back(std::move(term));
   return {};
 }
 
@@ -158,6 +160,7 @@ Result<StepReport> ClothSimulator::step(double dt) {
   }
   ++s.steps;
   report.energy = cloth_energy(*s.model, s.state).total;
+  for (const auto& term : s.terms) term->add_to_report(s.state.positions, report);
   report.ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return report;

@@ -27,6 +27,10 @@ std::optional<Error> GridClothOptions::validate() const {
   }
   if (!kDampingRange.contains(damping)) return Error{kDampingRange.refusal("damping", damping)};
   if (!kGravityRange.contains(gravity)) return Error{kGravityRange.refusal("gravity", gravity)};
+  if (!rotation.coeffs().allFinite() || std::abs(rotation.norm() - 1.0) > 1e-6)
+    return Error{"cloth rotation must be a unit quaternion"};
+  if (!offset.allFinite() || offset.cwiseAbs().maxCoeff() > kCoordinateRange.max)
+    return Error{"cloth offset must be finite and within " + format_number(kCoordinateRange.max)};
   if (material) {
     if (auto error = material->validate()) return error;
     // The smallest and largest values the mapping gives at this resolution.
@@ -106,10 +110,14 @@ ClothDesc make_grid_cloth(const GridClothOptions& o) {
   const int n = o.cells;
   const double spacing = o.size / n;
   const auto id = [n](int i, int j) { return grid_index(n, i, j); };
+  const Vec3 centre(0.5 * o.size, o.height, 0.0);
+  const bool placed = o.rotation.coeffs() != Quat::Identity().coeffs() || o.offset != Vec3::Zero();
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j <= n; ++j) {
-      desc.particles.push_back(
-          {Vec3(i * spacing, o.height, j * spacing - 0.5 * o.size), Vec3::Zero(), 1.0, false});
+      Vec3 p(i * spacing, o.height, j * spacing - 0.5 * o.size);
+      // Only a placed sheet is transformed, so the lab's positions keep their exact bits.
+      if (placed) p = o.rotation * (p - centre) + centre + o.offset;
+      desc.particles.push_back({p, Vec3::Zero(), 1.0, false});
     }
   }
   if (o.material) {
@@ -117,8 +125,17 @@ ClothDesc make_grid_cloth(const GridClothOptions& o) {
   } else {
     add_lab_elements(o, desc);
   }
-  desc.particles[id(0, 0)].pinned = true;
-  desc.particles[id(0, n)].pinned = true;
+  switch (o.pins) {
+    case GridPins::corners:
+      desc.particles[id(0, 0)].pinned = true;
+      desc.particles[id(0, n)].pinned = true;
+      break;
+    case GridPins::edge:
+      for (int j = 0; j <= n; ++j) desc.particles[id(0, j)].pinned = true;
+      break;
+    case GridPins::none:
+      break;
+  }
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
       desc.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});

@@ -1,5 +1,6 @@
 #include "animkit/io/cloth_report.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 namespace animkit {
@@ -11,6 +12,7 @@ std::string cloth_metrics_json(const ClothRunInfo& info, std::span<const StepRep
       {"particles", info.particles},
       {"springs", info.springs},
       {"integrator", info.integrator},
+      {"scene", info.scene.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(info.scene)},
       {"diverged", info.divergence.has_value()},
       {"ms_per_step", {{"median", s.ms_per_step_median}, {"mean", s.ms_per_step_mean}}},
       {"newton_iterations", {{"mean", s.newton_iterations_mean}, {"max", s.newton_iterations_max}}},
@@ -32,17 +34,34 @@ std::string cloth_metrics_json(const ClothRunInfo& info, std::span<const StepRep
         {"tolerance", info.tolerance}}},
   };
   if (info.divergence) j["divergence"] = *info.divergence;
+  if (!steps.empty() && steps.front().has_contact) {
+    // The run's closest approach and tightest continuous-collision bound, over every step.
+    double closest = steps.front().min_contact_distance, bound = 1.0;
+    int most = 0;
+    for (const StepReport& r : steps) {
+      closest = std::min(closest, r.min_contact_distance);
+      bound = std::min(bound, r.step_bound_min);
+      most = std::max(most, r.contact_pairs);
+    }
+    j["contact"] = {{"min_distance", closest}, {"pairs_max", most}, {"step_bound_min", bound}};
+  }
   nlohmann::ordered_json per_step = nlohmann::ordered_json::array();
   for (const StepReport& r : steps) {
-    per_step.push_back({{"newton_iterations", r.newton_iterations},
-                        {"line_search_steps", r.line_search_steps},
-                        {"linear_iterations", r.linear_iterations},
-                        {"projected_iterations", r.projected_iterations},
-                        {"gradient_norm_start", r.gradient_norm_start},
-                        {"gradient_norm_end", r.gradient_norm_end},
-                        {"converged", r.converged},
-                        {"energy", r.energy},
-                        {"ms", r.ms}});
+    nlohmann::ordered_json step = {{"newton_iterations", r.newton_iterations},
+                                   {"line_search_steps", r.line_search_steps},
+                                   {"linear_iterations", r.linear_iterations},
+                                   {"projected_iterations", r.projected_iterations},
+                                   {"gradient_norm_start", r.gradient_norm_start},
+                                   {"gradient_norm_end", r.gradient_norm_end},
+                                   {"converged", r.converged},
+                                   {"energy", r.energy},
+                                   {"ms", r.ms}};
+    if (r.has_contact) {
+      step["contact_pairs"] = r.contact_pairs;
+      step["min_contact_distance"] = r.min_contact_distance;
+      step["step_bound_min"] = r.step_bound_min;
+    }
+    per_step.push_back(std::move(step));
   }
   j["steps"] = std::move(per_step);
   return j.dump(1) + "\n";

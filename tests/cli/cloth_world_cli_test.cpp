@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -59,3 +60,60 @@ INSTANTIATE_TEST_SUITE_P(
         BadWorld{"--wind 1,x,0", "--wind expects X,Y,Z in m/s, got '1,x,0'"}));
 
 }  // namespace
+
+TEST(ClothWorldCli, RunsABuiltInSceneAndReportsItsContacts) {
+  const fs::path out = animkit::testing_support::fresh_dir("cloth_scene_builtin");
+  const auto r = run_command(kCli + " cloth --scene drape-sphere --frames 3 --no-picture --out " +
+                             out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto m = nlohmann::json::parse(read_file(out / "metrics.json"));
+  EXPECT_EQ(m["scene"], "drape-sphere");
+  EXPECT_EQ(m["frames"], 3);  // --frames replaces the scene's own
+  EXPECT_EQ(m["options"]["material"], "cotton");
+  EXPECT_EQ(m["integrator"], "implicit-multigrid");
+  ASSERT_TRUE(m.contains("contact"));
+  EXPECT_GT(m["contact"]["min_distance"].get<double>(), 0.0);
+  EXPECT_TRUE(m["steps"][0].contains("contact_pairs"));
+  EXPECT_TRUE(m["steps"][0].contains("step_bound_min"));
+  EXPECT_NE(read_file(out / "colliders.obj").find("o ball"), std::string::npos);
+}
+
+TEST(ClothWorldCli, RunsASceneFile) {
+  const fs::path dir = animkit::testing_support::fresh_dir("cloth_scene_file");
+  {
+    std::ofstream scene(dir / "scene.json");
+    scene << R"({"cloth": {"grid": 6, "material": "silk", "size": 0.5, "height": 0.5,
+                           "pins": "none"},
+                 "ground": {"height": 0.2}, "dt": 0.02, "frames": 4})";
+  }
+  const auto r = run_command(kCli + " cloth --scene " + (dir / "scene.json").string() +
+                             " --no-picture --out " + (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto m = nlohmann::json::parse(read_file(dir / "out" / "metrics.json"));
+  EXPECT_EQ(m["frames"], 4);
+  EXPECT_EQ(m["options"]["dt"], 0.02);
+  EXPECT_EQ(m["particles"], 49);
+}
+
+TEST(ClothWorldCli, SceneErrorsSayWhatIsWrong) {
+  const fs::path dir = animkit::testing_support::fresh_dir("cloth_scene_errors");
+  std::ofstream(dir / "bad.json") << R"({"colliders": [{"shape": "cube"}]})";
+  const struct {
+    std::string args, message;
+  } cases[] = {
+      {"--scene nope",
+       "unknown scene 'nope' (expected a .json file or one of: lab, drape-sphere, tablecloth, "
+       "flag, spinning-sphere, fold)"},
+      {"--scene flag --sphere 0,0,0,1",
+       "--sphere describes the cloth or its world, which --scene gives whole"},
+      {"--scene " + (dir / "bad.json").string(),
+       (dir / "bad.json").string() +
+           ": colliders[0].shape: expected sphere, box, capsule or mesh, got 'cube'"},
+      {"--scene " + (dir / "none.json").string(), (dir / "none.json").string() + ": no such file"},
+  };
+  for (const auto& c : cases) {
+    const auto r = run_command(kCli + " cloth " + c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args;
+    EXPECT_EQ(r.err, "animkit: error: " + c.message + "\n");
+  }
+}

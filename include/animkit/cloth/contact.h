@@ -67,6 +67,7 @@ class ContactTerm final : public EnergyTerm {
   void prepare(const ClothState& state, double h) override;
   void update(const Eigen::VectorXd& x) override;
   double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) override;
+  void add_to_report(const Eigen::VectorXd& x, StepReport& report) const override;
   double value(const Eigen::VectorXd& x) const override;
   double difference(const Eigen::VectorXd& x, const Eigen::VectorXd& step) const override;
   void add_gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const override;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "animkit/cloth/cloth_model.h"
+#include "animkit/cloth/step_report.h"
 
 namespace animkit {
 
@@ -39,6 +40,9 @@ class EnergyTerm {
   virtual double max_step(const Eigen::VectorXd& /*x*/, const Eigen::VectorXd& /*step*/) {
     return 1.0;
   }
+  /// After each step, at the new positions: adds the term's own numbers to the step's report
+  /// (e.g. contact counts and the smallest distance).
+  virtual void add_to_report(const Eigen::VectorXd& /*x*/, StepReport& /*report*/) const {}
   /// E(x); +infinity where x is not admissible.
   virtual double value(const Eigen::VectorXd& x) const = 0;
   /// E(x + step) - E(x). The line search compares differences; the default subtracts two

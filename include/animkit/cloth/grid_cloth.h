@@ -4,8 +4,16 @@
 
 #include "animkit/cloth/cloth_model.h"
 #include "animkit/cloth/material.h"
+#include "animkit/core/types.h"
 
 namespace animkit {
+
+/// Which particles of a grid are pinned.
+enum class GridPins {
+  corners,  ///< the two corners of the edge i = 0 (the lab's)
+  edge,     ///< the whole edge i = 0 (a flag on its pole)
+  none,     ///< none: a free sheet (dropped, draped)
+};
 
 /// An (n+1) x (n+1) grid of particles in the plane y = height, spanning `size` along x and z:
 /// particle (i, j) at (i * size / n, height, j * size / n - size / 2). Springs join each
@@ -24,6 +32,12 @@ struct GridClothOptions {
   double gravity = 0.3;
   /// A physical material: replaces mass, stiffness and damping (and the distance-2 springs).
   std::optional<ClothMaterial> material = std::nullopt;
+  GridPins pins = GridPins::corners;
+  /// Placement of the sheet laid out as above: turned by `rotation` (unit) about its centre
+  /// (size / 2, height, 0), then moved by `offset` (world space, scene units). Defaults: the
+  /// lab's flat sheet where it is.
+  Quat rotation = Quat::Identity();
+  Vec3 offset = Vec3::Zero();
 
   /// The first out-of-range option, or nothing. Cells are capped at kMaxGridCells; a material
   /// must give particle masses and stiffnesses inside parameter_ranges.h at this resolution.

@@ -45,6 +45,11 @@ struct StepReport {
   /// The smallest fraction of a Newton step (or of the move from x_n to y) the energy terms
   /// admitted (EnergyTerm::max_step), 1 when none bounded a step.
   double step_bound_min = 1.0;
+  /// With contact (contact.h), at the step's end: pairs closer than the contact distance and
+  /// the smallest distance among them (m; the contact distance when none is that close).
+  bool has_contact = false;
+  int contact_pairs = 0;
+  double min_contact_distance = 0.0;
   std::vector<IterationRecord> iterations;  ///< empty unless recording was asked for
 };
 

@@ -11,6 +11,7 @@ namespace animkit {
 
 struct ClothRunInfo {
   std::string integrator;  ///< e.g. "implicit-pcg"
+  std::string scene;       ///< the --scene (built-in name or file), empty for the options' own
   int grid = 0;            ///< cells per side (0 if not a grid)
   int particles = 0, springs = 0;
   double dt = 0.0;  ///< seconds per frame

@@ -191,6 +191,13 @@ void ContactTerm::add_hessian(const Eigen::VectorXd& x, bool /*projected: always
   });
 }
 
+void ContactTerm::add_to_report(const Eigen::VectorXd& x, StepReport& report) const {
+  const ContactStats s = stats(x);
+  report.has_contact = true;
+  report.contact_pairs = s.active_pairs;
+  report.min_contact_distance = s.min_distance;
+}
+
 ContactStats ContactTerm::stats(const Eigen::VectorXd& x) const {
   ContactStats stats;
   stats.candidate_pairs = static_cast<int>(impl_->pairs.size());

@@ -1,0 +1,75 @@
+#pragma once
+// A cloth scene as data: the sheet, what it meets (colliders, a ground, the air), the solver
+// and the run's length. The CLI's options, a JSON scene file (io/cloth_scene_file.h) and the
+// built-in scenes (scene/cloth_scenes.h) all describe a run as one ClothWorldDesc;
+// build_cloth_world() turns it into a simulator with its energy terms, the one place where
+// contact and air are wired to a cloth.
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "animkit/cloth/aerodynamics.h"
+#include "animkit/cloth/cloth_simulator.h"
+#include "animkit/cloth/contact.h"
+#include "animkit/cloth/grid_cloth.h"
+#include "animkit/cloth/mesh_cloth.h"
+#include "animkit/collision/collider.h"
+#include "animkit/core/result.h"
+
+namespace animkit {
+
+/// The infinite ground plane y = height: the cloth stays above it.
+struct GroundDesc {
+  double height = 0.0;    ///< world y, m, finite
+  double friction = 0.3;  ///< Coulomb coefficient mu between cloth and ground, finite, >= 0
+};
+
+struct ClothWorldDesc {
+  /// The sheet: a grid (the lab's by default) or a cloth cut from a triangle mesh.
+  std::variant<GridClothOptions, MeshClothOptions> cloth = GridClothOptions{};
+  /// The material preset's name when the sheet's material came from one (for reports), else
+  /// empty.
+  std::string material_name;
+  std::vector<ColliderDesc> colliders;  ///< solid, possibly moving; names distinct
+  std::optional<GroundDesc> ground;     ///< none by default (the lab's cloth touches nothing)
+  /// Contact settings, used when there is a collider or a ground.
+  ContactSettings contact;
+  std::optional<AirSettings> air;  ///< wind and air drag; none by default (still, no drag)
+  SimulationOptions simulation;    ///< the integrator and its settings
+  double time_step = 1.0 / 60.0;   ///< s per frame, in kTimeStepRange (the lab's 1/60)
+  int frames = 300;                ///< frames to simulate, in [1, kMaxWorldFrames]
+
+  bool has_contact() const { return !colliders.empty() || ground.has_value(); }
+  /// The first problem: the sheet's options, a collider's, the ground's, contact or air
+  /// settings, the solver's, a time step or frame count out of range. Building can still fail
+  /// on what needs the built cloth (a particle starting inside a collider).
+  std::optional<Error> validate() const;
+};
+
+/// Largest frame count a world runs: a run still ends.
+constexpr int kMaxWorldFrames = 1'000'000;
+
+/// Newton's iteration cap with contact, when the settings' own is lower: an impact takes many
+/// more iterations than a free cloth, since continuous collision detection shortens the steps
+/// while new parts of the cloth arrive at a collider.
+constexpr int kContactNewtonIterations = 300;
+
+/// A built world: the simulator (with contact and air terms added) and the colliders as they
+/// stand at time 0 (for drawing and export).
+struct ClothWorld {
+  ClothSimulator simulator;
+  std::vector<Collider> colliders;
+  std::shared_ptr<ContactTerm> contact;  ///< null without colliders or ground
+  std::shared_ptr<AirTerm> air;          ///< null in still air
+};
+
+/// The sheet's description (grid or mesh), validated.
+Result<ClothDesc> build_world_cloth(const ClothWorldDesc& desc);
+
+/// Validates and builds everything. Errors name the first problem, including a particle that
+/// starts inside a collider or on or below the ground.
+Result<ClothWorld> build_cloth_world(const ClothWorldDesc& desc);
+
+}  // namespace animkit

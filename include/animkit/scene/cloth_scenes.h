@@ -1,0 +1,44 @@
+#pragma once
+// The built-in cloth scenes: one list the CLI (`animkit cloth --scene NAME`), the viewer's
+// scene menu, the tests (every frame of every scene audited for intersections) and the
+// benchmarks iterate. Each is a ClothWorldDesc (cloth/cloth_world.h), the same data a JSON
+// scene file holds.
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "animkit/cloth/cloth_world.h"
+
+namespace animkit {
+
+struct ClothSceneEntry {
+  std::string_view name;     ///< what --scene and the menu take, e.g. "drape-sphere"
+  std::string_view summary;  ///< one line for --help and menus
+  ClothWorldDesc (*make)();  ///< the scene, with its own frame count and time step
+};
+
+/// Every built-in scene, the lab's hanging cloth (the default) first.
+std::span<const ClothSceneEntry> cloth_scenes();
+
+/// The scene called `name`, or null.
+const ClothSceneEntry* find_cloth_scene(std::string_view name);
+
+/// "lab, drape-sphere, ...", for messages.
+std::string cloth_scene_names();
+
+/// Where pictures of a world look: a box around the cloth as it starts and the colliders, and
+/// the floor drawn under it (the ground, or below where the sheet can hang).
+struct ClothPictureFrame {
+  Eigen::AlignedBox3d focus;
+  double floor_height = 0.0;
+};
+ClothPictureFrame cloth_picture_frame(const ClothWorldDesc& world, const ClothDesc& cloth,
+                                      const ClothState& state,
+                                      const std::vector<Collider>& colliders);
+
+/// The square cotton sheet of `cells` cells per side and `size` m that the contact scenes
+/// use: flat at height y, centred on the y axis, free (no pins), gravity 9.81. Solved by
+/// Newton with multigrid to 1e-4 relative gradient, at dt 1/30 s.
+ClothWorldDesc cotton_sheet_world(int cells, double size, double height);
+
+}  // namespace animkit

@@ -1,0 +1,112 @@
+#include "animkit/cloth/cloth_world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "animkit/cloth/parameter_ranges.h"
+#include "animkit/core/quote.h"
+#include "animkit/core/validation.h"
+
+namespace animkit {
+
+std::optional<Error> ClothWorldDesc::validate() const {
+  if (const auto* grid = std::get_if<GridClothOptions>(&cloth)) {
+    if (auto error = grid->validate()) return error;
+  }
+  if (auto error = validate_colliders(colliders)) return error;
+  for (const ColliderDesc& c : colliders) {
+    if (std::holds_alternative<PlaneShape>(c.shape)) {
+      return Error{"collider " + quote_input(c.name) +
+                   ": contact takes no plane collider; give a floor as the scene's ground"};
+    }
+  }
+  if (ground) {
+    if (!kCoordinateRange.contains(ground->height))
+      return Error{kCoordinateRange.refusal("the ground's height", ground->height)};
+    if (!std::isfinite(ground->friction) || ground->friction < 0.0)
+      return Error{"the ground's friction must be >= 0, got " + format_number(ground->friction)};
+  }
+  if (has_contact()) {
+    if (auto error = contact.validate()) return error;
+  }
+  if (air) {
+    if (auto error = air->validate()) return error;
+  }
+  if (auto error = simulation.validate()) return error;
+  if (!kTimeStepRange.contains(time_step))
+    return Error{kTimeStepRange.refusal("the time step (s)", time_step)};
+  if (frames < 1 || frames > kMaxWorldFrames) {
+    return Error{"frames must be between 1 and " + std::to_string(kMaxWorldFrames) + ", got " +
+                 std::to_string(frames)};
+  }
+  return std::nullopt;
+}
+
+Result<ClothDesc> build_world_cloth(const ClothWorldDesc& desc) {
+  if (const auto* grid = std::get_if<GridClothOptions>(&desc.cloth)) {
+    if (auto error = grid->validate()) return fail(error->message);
+    return make_grid_cloth(*grid);
+  }
+  return make_mesh_cloth(std::get<MeshClothOptions>(desc.cloth));
+}
+
+namespace {
+
+// The contact term over the colliders' surfaces at time 0 and the ground; refuses a cloth
+// that starts inside a collider or on or below the ground (the barrier would be infinite).
+Result<std::shared_ptr<ContactTerm>> make_contact(const ClothWorldDesc& desc,
+                                                  const ClothSimulator& sim,
+                                                  const std::vector<Collider>& colliders) {
+  const Eigen::VectorXd& x = sim.state().positions;
+  if (auto inside = find_particle_inside(x, colliders)) return fail(inside->message);
+  ContactObstacles obstacles;
+  if (desc.ground) {
+    obstacles.ground_height = desc.ground->height;
+    for (int i = 0; i < sim.model().particle_count(); ++i) {
+      if (sim.state().position(i).y() <= desc.ground->height)
+        return fail("particle " + std::to_string(i) + " starts on or below the ground");
+    }
+  }
+  for (const Collider& c : colliders)
+    obstacles.meshes.push_back({c.world_vertices(), c.model().surface.triangles});
+  return ContactTerm::create(std::make_shared<const ClothModel>(sim.model()), desc.contact,
+                             std::move(obstacles));
+}
+
+}  // namespace
+
+Result<ClothWorld> build_cloth_world(const ClothWorldDesc& desc) {
+  if (auto error = desc.validate()) return fail(error->message);
+  auto cloth = build_world_cloth(desc);
+  if (!cloth) return fail(cloth.error().message);
+  SimulationOptions options = desc.simulation;
+  if (auto* newton = std::get_if<NewtonSettings>(&options.integrator); newton && desc.has_contact())
+    newton->max_iterations = std::max(newton->max_iterations, kContactNewtonIterations);
+  auto sim = ClothSimulator::create(*cloth, options);
+  if (!sim) return fail(sim.error().message);
+
+  std::vector<Collider> colliders;
+  for (const ColliderDesc& c : desc.colliders) {
+    auto collider = Collider::create(c, 0.0);
+    if (!collider) return fail(collider.error().message);
+    colliders.push_back(std::move(*collider));
+  }
+  std::shared_ptr<ContactTerm> contact;
+  if (desc.has_contact()) {
+    auto term = make_contact(desc, *sim, colliders);
+    if (!term) return fail(term.error().message);
+    contact = std::move(*term);
+    if (auto ok = sim->add_energy_term(contact); !ok) return fail(ok.error().message);
+  }
+  std::shared_ptr<AirTerm> air;
+  if (desc.air) {
+    auto term = AirTerm::create(sim->model(), *desc.air);
+    if (!term) return fail(term.error().message);
+    air = std::move(*term);
+    if (auto ok = sim->add_energy_term(air); !ok) return fail(ok.error().message);
+  }
+  return ClothWorld{std::move(*sim), std::move(colliders), std::move(contact), std::move(air)};
+}
+
+}  // namespace animkit

@@ -1,0 +1,153 @@
+// JSON cloth scenes: every key read into the ClothWorldDesc, defaults where absent, and one
+// clear error per kind of mistake.
+#include "animkit/io/cloth_scene_file.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "../support/temp_files.h"
+#include "animkit/cloth/integrator_registry.h"
+
+namespace animkit {
+namespace {
+
+Result<ClothWorldDesc> parse(const std::string& text) {
+  return parse_cloth_scene(text, "scene.json", std::filesystem::current_path());
+}
+
+TEST(ClothSceneFile, AnEmptyObjectIsTheLabsScene) {
+  const auto scene = parse("{}");
+  ASSERT_TRUE(scene) << scene.error().message;
+  const auto& grid = std::get<GridClothOptions>(scene->cloth);
+  EXPECT_EQ(grid.cells, 10);
+  EXPECT_EQ(grid.pins, GridPins::corners);
+  EXPECT_TRUE(scene->colliders.empty());
+  EXPECT_FALSE(scene->ground);
+  EXPECT_FALSE(scene->air);
+  EXPECT_EQ(scene->frames, 300);
+  EXPECT_DOUBLE_EQ(scene->time_step, 1.0 / 60.0);
+}
+
+TEST(ClothSceneFile, ReadsEveryPart) {
+  const auto scene = parse(R"({
+    "cloth": {"grid": 20, "size": 1.5, "height": 0.9, "pins": "none", "material": "cotton",
+              "rotation": {"axis": [1, 0, 0], "degrees": 90}, "offset": [-0.75, 0, 0]},
+    "colliders": [
+      {"name": "ball", "shape": "sphere", "radius": 0.3, "position": [0, 0.3, 0],
+       "angular_velocity": [0, 2, 0], "friction": 0.6},
+      {"name": "table", "shape": "box", "half_extents": [0.4, 0.1, 0.4],
+       "keyframes": [{"time": 0, "position": [0, 0, 0]},
+                     {"time": 1, "position": [0, 0.5, 0],
+                      "rotation": {"axis": [0, 1, 0], "degrees": 45}}]},
+      {"shape": "capsule", "radius": 0.1, "half_length": 0.2, "position": [2, 0, 0]}],
+    "ground": {"height": -0.1, "friction": 0.4},
+    "contact": {"thickness": 0.004, "self_contact": false},
+    "wind": {"velocity": [3, 0, 0], "gust": [1, 0, 0], "gust_frequency": 0.25},
+    "solver": {"integrator": "implicit-multigrid", "tolerance": 1e-4},
+    "dt": 0.02, "frames": 12})");
+  ASSERT_TRUE(scene) << scene.error().message;
+  const auto& grid = std::get<GridClothOptions>(scene->cloth);
+  EXPECT_EQ(grid.cells, 20);
+  EXPECT_EQ(grid.pins, GridPins::none);
+  ASSERT_TRUE(grid.material);
+  EXPECT_EQ(scene->material_name, "cotton");
+  EXPECT_DOUBLE_EQ(grid.gravity, 9.81);  // a material's default
+  EXPECT_NEAR((grid.rotation * Vec3::UnitY() - Vec3::UnitZ()).norm(), 0.0, 1e-15);
+  EXPECT_EQ(grid.offset, Vec3(-0.75, 0, 0));
+  ASSERT_EQ(scene->colliders.size(), 3u);
+  EXPECT_EQ(scene->colliders[0].name, "ball");
+  EXPECT_DOUBLE_EQ(std::get<SphereShape>(scene->colliders[0].shape).radius, 0.3);
+  EXPECT_EQ(std::get<ScriptedMotion>(scene->colliders[0].motion).angular_velocity, Vec3(0, 2, 0));
+  EXPECT_DOUBLE_EQ(scene->colliders[0].friction, 0.6);
+  const auto& keys = std::get<KeyframedMotion>(scene->colliders[1].motion).keyframes;
+  ASSERT_EQ(keys.size(), 2u);
+  EXPECT_EQ(keys[1].position, Vec3(0, 0.5, 0));
+  EXPECT_EQ(scene->colliders[2].name, "colliders[2]");  // unnamed: named by its place
+  ASSERT_TRUE(scene->ground);
+  EXPECT_DOUBLE_EQ(scene->ground->friction, 0.4);
+  EXPECT_DOUBLE_EQ(scene->contact.thickness, 0.004);
+  EXPECT_FALSE(scene->contact.self_contact);
+  ASSERT_TRUE(scene->air);
+  EXPECT_EQ(scene->air->wind.velocity, Vec3(3, 0, 0));
+  EXPECT_DOUBLE_EQ(*tolerance_of(scene->simulation.integrator), 1e-4);
+  EXPECT_EQ(std::get<NewtonSettings>(scene->simulation.integrator).linear_solver,
+            LinearSolverKind::multigrid);
+  EXPECT_DOUBLE_EQ(scene->time_step, 0.02);
+  EXPECT_EQ(scene->frames, 12);
+}
+
+TEST(ClothSceneFile, ReadsAMeshClothAndAMeshColliderBesideTheFile) {
+  const auto dir = testing_support::fresh_dir("cloth_scene_mesh");
+  const std::string quad = "v 0 1 0\nv 1 1 0\nv 1 1 1\nv 0 1 1\nf 1 2 3 4\n";
+  std::ofstream(dir / "sheet.obj") << quad;
+  std::ofstream(dir / "body.obj") << "v 0 0 0\nv 1 0 0\nv 0 0 1\nv 0 -1 0\n"
+                                  << "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n";
+  std::ofstream(dir / "scene.json") << R"({"cloth": {"mesh": "sheet.obj", "pin": [0, 1]},
+    "colliders": [{"shape": "mesh", "mesh": "body.obj", "position": [0, -1, 0]}]})";
+  const auto scene = read_cloth_scene(dir / "scene.json");
+  ASSERT_TRUE(scene) << scene.error().message;
+  const auto& mesh = std::get<MeshClothOptions>(scene->cloth);
+  EXPECT_EQ(mesh.mesh.vertices.size(), 4u);
+  EXPECT_EQ(mesh.pins, (std::vector<int>{0, 1}));
+  EXPECT_EQ(std::get<MeshShape>(scene->colliders[0].shape).mesh.triangles.size(), 4u);
+}
+
+struct BadScene {
+  std::string text, message;
+};
+
+class ClothSceneFileErrors : public ::testing::TestWithParam<BadScene> {};
+
+TEST_P(ClothSceneFileErrors, NameTheKeyAndTheProblem) {
+  const auto scene = parse(GetParam().text);
+  ASSERT_FALSE(scene);
+  EXPECT_EQ(scene.error().message, "scene.json: " + GetParam().message);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, ClothSceneFileErrors,
+    ::testing::Values(
+        BadScene{"",
+                 "not valid JSON ([json.exception.parse_error.101] parse error at line 1, "
+                 "column 1: syntax error while parsing value - unexpected end of input; "
+                 "expected '[', '{', or a literal)"},
+        BadScene{"[]", "the scene: expected an object {...}, got an array"},
+        BadScene{R"({"frame": 3})",
+                 "the scene: unknown key 'frame' (this object takes: cloth, colliders, contact, "
+                 "dt, frames, ground, solver, wind)"},
+        BadScene{R"({"cloth": {"grid": 1.5}})",
+                 "cloth.grid: expected a whole number, got a number"},
+        BadScene{R"({"cloth": {"material": "tweed"}})",
+                 "cloth.material: unknown material preset 'tweed'"},
+        BadScene{R"({"cloth": {"material": "silk", "mass": 2}})",
+                 "cloth.mass: the material sets masses, stiffnesses and damping"},
+        BadScene{R"({"cloth": {"pins": "all"}})",
+                 "cloth.pins: expected corners, edge or none, got 'all'"},
+        BadScene{R"({"colliders": [{"shape": "cube"}]})",
+                 "colliders[0].shape: expected sphere, box, capsule or mesh, got 'cube'"},
+        BadScene{R"({"colliders": [{"radius": "big"}]})",
+                 "colliders[0].radius: expected a number, got the string 'big'"},
+        BadScene{R"({"colliders": [{"position": [0, 1]}]})",
+                 "colliders[0].position: expected three numbers [x, y, z], got an array"},
+        BadScene{R"({"colliders": [{"rotation": {"axis": [0, 0, 0], "degrees": 3}}]})",
+                 "colliders[0].rotation: the rotation's axis must not be zero"},
+        BadScene{R"({"colliders": [{"radius": -1}]})",
+                 "collider 'colliders[0]': radius must be > 0, got -1"},
+        BadScene{R"({"colliders": [{"keyframes": [{"time": 0}], "velocity": [1, 0, 0]}]})",
+                 "colliders[0].velocity: give either keyframes or a pose"},
+        BadScene{R"({"colliders": [{"shape": "mesh", "mesh": "missing.obj"}]})",
+                 "colliders[0].mesh: " +
+                     (std::filesystem::current_path() / "missing.obj").string() + ": no such file"},
+        BadScene{R"({"ground": {"friction": -1}})", "the ground's friction must be >= 0, got -1"},
+        BadScene{R"({"solver": {"integrator": "rk4"}})",
+                 "solver.integrator: unknown integrator 'rk4' (expected one of: " +
+                     integrator_names() + ")"},
+        BadScene{R"({"dt": 1e400})",
+                 "not valid JSON ([json.exception.out_of_range.406] number overflow parsing "
+                 "'1e400')"},
+        BadScene{R"({"frames": 0})", "frames must be between 1 and 1000000, got 0"}));
+
+}  // namespace
+}  // namespace animkit
