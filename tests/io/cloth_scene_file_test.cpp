@@ -94,6 +94,15 @@ TEST(ClothSceneFile, ReadsAMeshClothAndAMeshColliderBesideTheFile) {
   EXPECT_EQ(std::get<MeshShape>(scene->colliders[0].shape).mesh.triangles.size(), 4u);
 }
 
+TEST(ClothSceneFile, TheREADMEsExampleSceneReadsAndBuilds) {
+  const auto scene = read_cloth_scene(ANIMKIT_SOURCE_DIR "/docs/scenes/pillow-drop.json");
+  ASSERT_TRUE(scene) << scene.error().message;
+  EXPECT_EQ(scene->colliders.size(), 2u);
+  EXPECT_EQ(scene->frames, 60);
+  const auto world = build_cloth_world(*scene);
+  EXPECT_TRUE(world) << world.error().message;
+}
+
 struct BadScene {
   std::string text, message;
 };
