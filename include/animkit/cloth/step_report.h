@@ -27,9 +27,13 @@ struct StepReport {
   /// Iterations of the implicit solver (Newton iterations, local/global iterations, VBD
   /// sweeps), summed over substeps (0 for explicit Euler).
   int newton_iterations = 0;
-  int line_search_steps = 0;         ///< backtracking reductions, summed
-  int linear_iterations = 0;         ///< PCG iterations, summed (0 for a direct solve)
-  int projected_iterations = 0;      ///< Newton iterations that needed the projected Hessian
+  int line_search_steps = 0;     ///< backtracking reductions, summed
+  int linear_iterations = 0;     ///< PCG iterations, summed (0 for a direct solve)
+  int projected_iterations = 0;  ///< Newton iterations that needed the projected Hessian
+  /// Lagged minimizations (friction's lagging passes, friction.h), summed over substeps: one
+  /// per substep of a Newton integrator, plus one per re-lag that moved the minimum (0 for
+  /// integrators without energy terms).
+  int friction_iterations = 0;
   double gradient_norm_start = 0.0;  ///< |grad g| at x = y (first substep)
   double gradient_norm_end = 0.0;    ///< |grad g| at the accepted x (last substep)
   /// The |grad g| Newton stopped at: tolerance x the start, or the rounding floor when higher.
