@@ -27,13 +27,9 @@ struct StepReport {
   /// Iterations of the implicit solver (Newton iterations, local/global iterations, VBD
   /// sweeps), summed over substeps (0 for explicit Euler).
   int newton_iterations = 0;
-  int line_search_steps = 0;     ///< backtracking reductions, summed
-  int linear_iterations = 0;     ///< PCG iterations, summed (0 for a direct solve)
-  int projected_iterations = 0;  ///< Newton iterations that needed the projected Hessian
-  /// Lagged minimizations (friction's lagging passes, friction.h), summed over substeps: one
-  /// per substep of a Newton integrator, plus one per re-lag that moved the minimum (0 for
-  /// integrators without energy terms).
-  int friction_iterations = 0;
+  int line_search_steps = 0;         ///< backtracking reductions, summed
+  int linear_iterations = 0;         ///< PCG iterations, summed (0 for a direct solve)
+  int projected_iterations = 0;      ///< Newton iterations that needed the projected Hessian
   double gradient_norm_start = 0.0;  ///< |grad g| at x = y (first substep)
   double gradient_norm_end = 0.0;    ///< |grad g| at the accepted x (last substep)
   /// The |grad g| Newton stopped at: tolerance x the start, or the rounding floor when higher.
@@ -41,6 +37,10 @@ struct StepReport {
   bool converged = true;  ///< every substep reached its gradient tolerance
   double energy = 0.0;    ///< total mechanical energy after the step (cloth_energy().total)
   double ms = 0.0;        ///< wall time of the whole step
+  /// Lagged minimizations (friction's lagging passes, friction.h), summed over substeps: one
+  /// per substep of a Newton integrator, plus one per re-lag that moved the minimum (0 for
+  /// the integrators that take no energy terms).
+  int friction_iterations = 0;
   /// Time per stage (ms, summed over substeps): gradient and objective evaluations, Hessian
   /// assembly, linear solves, line search; with energy terms also their per-iterate updates
   /// (e.g. finding contact pairs) and step bounds (e.g. continuous collision detection).
