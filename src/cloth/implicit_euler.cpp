@@ -152,7 +152,8 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
     if (!converged || !potential_.has_terms() || !potential_.relag_terms(x_)) break;
     gradient_norm = arrive_at_iterate(report);
     converged = stop.reached(gradient_norm);
-    if (!converged) ++report.friction_iterations;
+    if (converged) break;  // the re-lag left x a minimum: the lagged values have settled
+    ++report.friction_iterations;
   }
   report.gradient_norm_end = gradient_norm;
   report.converged = report.converged && converged;

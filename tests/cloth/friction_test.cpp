@@ -278,6 +278,7 @@ TEST(Friction, GradientMatchesFiniteDifferences) {
   const FrictionStats stats = s.friction->stats();
   EXPECT_GT(stats.point_triangle_pairs, 0);
   EXPECT_GT(stats.ground_pairs, 0);
+  EXPECT_GT(stats.edge_edge_pairs, 0);
   EXPECT_GT(stats.normal_force_sum, 0.0);
   const Eigen::VectorXd x = displaced(s.sim.state().positions);
   Eigen::VectorXd gradient = Eigen::VectorXd::Zero(x.size());
