@@ -51,11 +51,11 @@ struct FrictionSettings {
 
 /// What friction holds at the last lag (for reports and tests).
 struct FrictionStats {
-  int point_triangle_pairs = 0;   ///< lagged pairs with nonzero mu, by kind
-  int edge_edge_pairs = 0;        ///<
-  int ground_pairs = 0;           ///<
-  double normal_force_sum = 0.0;  ///< N, sum of lambda over those pairs
-  int passes = 0;                 ///< lagging passes so far in the current substep
+  int point_triangle_pairs = 0;   ///< lagged point-triangle pairs with mu > 0
+  int edge_edge_pairs = 0;        ///< lagged edge-edge pairs with mu > 0
+  int ground_pairs = 0;           ///< lagged particle-ground pairs with mu > 0
+  double normal_force_sum = 0.0;  ///< N, >= 0: the sum of lambda over those pairs
+  int passes = 0;                 ///< lagging passes so far in the current substep, >= 0
 };
 
 class FrictionTerm final : public EnergyTerm {
