@@ -123,37 +123,29 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
       begin_implicit_substep(potential_, start_norm, options_.tolerance, report);
   bool converged = stop.reached(gradient_norm);
   ++report.friction_iterations;
-  // Newton's iterations, shared by the lagging passes: after converging, terms with lagged
-  // quantities (friction) may re-lag at x; a re-lag that breaks the stopping test costs
-  // another pass of iterations from x (IPC, Li et al. 2020, section 5).
-  for (int k = 0;;) {
-    for (; !converged && std::isfinite(gradient_norm) && k < options_.max_iterations; ++k) {
-      IterationRecord record;
-      // g itself is needed only for the record: the line search works with differences.
-      if (options_.record_iterations) record.objective = potential_.value(x_);
-      const double slope =
-          newton_direction(gradient_norm, gradient_norm / start_norm, record, report);
-      const double bound = step_bound(report);
-      const std::optional<double> decrease = line_search(slope, bound, record, report);
-      report.line_search_steps += record.line_search_steps;
-      report.linear_iterations += record.linear_iterations;
-      if (!decrease) break;  // no decrease found: keep x (reported as not converged)
-      gradient_norm = accept_step(report);
-      ++report.newton_iterations;
-      converged = stop.reached(gradient_norm);
-
-      record.gradient_norm = gradient_norm;
-      record.ms = ms_since(substep_start);
-      record.decrease = *decrease;
-      if (options_.record_iterations) record.objective_after = potential_.value(x_);
-      record.slope = slope;
-      if (options_.record_iterations) report.iterations.push_back(record);
-    }
-    if (!converged || !potential_.has_terms() || !potential_.relag_terms(x_)) break;
-    gradient_norm = arrive_at_iterate(report);
+  for (int k = 0; std::isfinite(gradient_norm) && k < options_.max_iterations; ++k) {
+    if (converged && !next_lagging_pass(stop, gradient_norm, report)) break;
+    converged = false;
+    IterationRecord record;
+    // g itself is needed only for the record: the line search works with differences.
+    if (options_.record_iterations) record.objective = potential_.value(x_);
+    const double slope =
+        newton_direction(gradient_norm, gradient_norm / start_norm, record, report);
+    const double bound = step_bound(report);
+    const std::optional<double> decrease = line_search(slope, bound, record, report);
+    report.line_search_steps += record.line_search_steps;
+    report.linear_iterations += record.linear_iterations;
+    if (!decrease) break;  // no decrease found: keep x (reported as not converged)
+    gradient_norm = accept_step(report);
+    ++report.newton_iterations;
     converged = stop.reached(gradient_norm);
-    if (converged) break;  // the re-lag left x a minimum: the lagged values have settled
-    ++report.friction_iterations;
+
+    record.gradient_norm = gradient_norm;
+    record.ms = ms_since(substep_start);
+    record.decrease = *decrease;
+    if (options_.record_iterations) record.objective_after = potential_.value(x_);
+    record.slope = slope;
+    if (options_.record_iterations) report.iterations.push_back(record);
   }
   report.gradient_norm_end = gradient_norm;
   report.converged = report.converged && converged;
@@ -178,6 +170,19 @@ double ImplicitEuler::start_substep(const ClothState& state, double h,
     report.ms_step_bound += ms_since(t);
   }
   return arrive_at_iterate(report);
+}
+
+// At a converged x, terms with quantities lagged at x_n (friction's normal forces and bases)
+// may re-lag there (IPC, Li et al. 2020, section 5). True when that broke the stopping test:
+// Newton goes on from x with the re-lagged g (`gradient_norm` is its gradient there), one
+// more lagging pass. False: nothing re-lagged, or x is still a minimum; the substep ends.
+bool ImplicitEuler::next_lagging_pass(const GradientStop& stop, double& gradient_norm,
+                                      StepReport& report) {
+  if (!potential_.has_terms() || !potential_.relag_terms(x_)) return false;
+  gradient_norm = arrive_at_iterate(report);
+  if (stop.reached(gradient_norm)) return false;
+  ++report.friction_iterations;
+  return true;
 }
 
 // Hessian and Newton direction dx: the exact Hessian first unless always projecting; redone
