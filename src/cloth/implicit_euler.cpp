@@ -122,7 +122,10 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
   const GradientStop stop =
       begin_implicit_substep(potential_, start_norm, options_.tolerance, report);
   bool converged = stop.reached(gradient_norm);
-  for (int k = 0; !converged && std::isfinite(gradient_norm) && k < options_.max_iterations; ++k) {
+  ++report.friction_iterations;
+  for (int k = 0; std::isfinite(gradient_norm) && k < options_.max_iterations; ++k) {
+    if (converged && !next_lagging_pass(stop, gradient_norm, report)) break;
+    converged = false;
     IterationRecord record;
     // g itself is needed only for the record: the line search works with differences.
     if (options_.record_iterations) record.objective = potential_.value(x_);
@@ -167,6 +170,19 @@ double ImplicitEuler::start_substep(const ClothState& state, double h,
     report.ms_step_bound += ms_since(t);
   }
   return arrive_at_iterate(report);
+}
+
+// At a converged x, terms with quantities lagged at x_n (friction's normal forces and bases)
+// may re-lag there (IPC, Li et al. 2020, section 5). True when that broke the stopping test:
+// Newton goes on from x with the re-lagged g (`gradient_norm` is its gradient there), one
+// more lagging pass. False: nothing re-lagged, or x is still a minimum; the substep ends.
+bool ImplicitEuler::next_lagging_pass(const GradientStop& stop, double& gradient_norm,
+                                      StepReport& report) {
+  if (!potential_.has_terms() || !potential_.relag_terms(x_)) return false;
+  gradient_norm = arrive_at_iterate(report);
+  if (stop.reached(gradient_norm)) return false;
+  ++report.friction_iterations;
+  return true;
 }
 
 // Hessian and Newton direction dx: the exact Hessian first unless always projecting; redone

@@ -78,6 +78,12 @@ void IncrementalPotential::update_terms(const Eigen::VectorXd& x) {
   for (const auto& term : terms_) term->update(x);
 }
 
+bool IncrementalPotential::relag_terms(const Eigen::VectorXd& x) {
+  bool changed = false;
+  for (const auto& term : terms_) changed = term->relag(x) || changed;  // every term, always
+  return changed;
+}
+
 double IncrementalPotential::max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) {
   double bound = 1.0;
   for (const auto& term : terms_) bound = std::min(bound, term->max_step(x, step));

@@ -24,6 +24,8 @@
 
 namespace animkit {
 
+struct ContactGeometry;  // src/cloth/contact/contact_candidates.h (internal)
+
 struct ContactSettings {
   /// dhat, m: the barrier acts on pairs closer than this (the cloth's thickness), > 0.
   double thickness = 2e-3;
@@ -78,6 +80,12 @@ class ContactTerm final : public EnergyTerm {
   double stiffness() const;
   /// Contacts at the last iterate.
   ContactStats stats(const Eigen::VectorXd& x) const;
+
+  /// What the friction term (friction.h) lags from the same contacts: the settings, the
+  /// ground, and the primitives (an internal type of src/cloth/contact/).
+  const ContactSettings& settings() const;
+  std::optional<double> ground_height() const;
+  const ContactGeometry& geometry() const;
 
  private:
   struct Impl;

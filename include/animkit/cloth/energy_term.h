@@ -32,6 +32,11 @@ class EnergyTerm {
   /// accepted step) before g's gradient and Hessian are taken there: e.g. to gather the contact
   /// pairs close to x.
   virtual void update(const Eigen::VectorXd& /*x*/) {}
+  /// Called when the minimization has converged at x: a term that froze quantities at x_n
+  /// (friction's normal forces and tangent bases, IPC section 5) may refresh them from x and
+  /// return true; the minimization then goes on from x with the changed g. False: nothing
+  /// changed (the default), the substep ends.
+  virtual bool relag(const Eigen::VectorXd& /*x*/) { return false; }
   /// The largest fraction t in (0, 1] of `step` such that every point x + s step, s in [0, t],
   /// is admissible for this term (e.g. intersection-free, by conservative continuous collision
   /// detection); the line search never tries a longer step. Called once per iteration before

@@ -18,6 +18,8 @@
 
 namespace animkit {
 
+struct GradientStop;  // implicit_substep.h
+
 /// Advances a cloth by implicit Euler steps. Holds the workspace (vectors, block Hessian,
 /// preconditioner; for the direct solver the pattern and symbolic factorization) sized once for
 /// its model: the PCG path allocates nothing in the Newton loop. The direct path hands Eigen's
@@ -40,6 +42,7 @@ class ImplicitEuler final : public ClothIntegrator {
   // The stages of a substep, in order (see step()).
   double start_substep(const ClothState& state, double h, const Eigen::VectorXd* external_forces,
                        StepReport& report);
+  bool next_lagging_pass(const GradientStop& stop, double& gradient_norm, StepReport& report);
   double newton_direction(double gradient_norm, double relative_gradient, IterationRecord& record,
                           StepReport& report);
   bool solve_newton_system(double relative_gradient, IterationRecord& record);

@@ -44,6 +44,8 @@ class IncrementalPotential {
 
   /// Tells every term that the minimization reached x (see EnergyTerm::update).
   void update_terms(const Eigen::VectorXd& x);
+  /// Lets every term re-lag at a converged x (EnergyTerm::relag); true if any changed g.
+  bool relag_terms(const Eigen::VectorXd& x);
   /// The largest fraction in (0, 1] of `step` every term admits from x (EnergyTerm::max_step);
   /// 1 without terms.
   double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step);

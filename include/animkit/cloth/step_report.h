@@ -37,6 +37,10 @@ struct StepReport {
   bool converged = true;  ///< every substep reached its gradient tolerance
   double energy = 0.0;    ///< total mechanical energy after the step (cloth_energy().total)
   double ms = 0.0;        ///< wall time of the whole step
+  /// Lagged minimizations (friction's lagging passes, friction.h), summed over substeps: one
+  /// per substep of a Newton integrator, plus one per re-lag that moved the minimum (0 for
+  /// the integrators that take no energy terms).
+  int friction_iterations = 0;
   /// Time per stage (ms, summed over substeps): gradient and objective evaluations, Hessian
   /// assembly, linear solves, line search; with energy terms also their per-iterate updates
   /// (e.g. finding contact pairs) and step bounds (e.g. continuous collision detection).

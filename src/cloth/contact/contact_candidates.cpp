@@ -33,6 +33,7 @@ Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
   std::vector<Vec3> vertices;
   for (const TriangleMesh& mesh : obstacles) {
     const int first = static_cast<int>(vertices.size());
+    g.obstacle_mesh_start.push_back(first);
     vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
     for (const auto& t : mesh.triangles)
       triangles.push_back({first + t[0], first + t[1], first + t[2]});
@@ -49,6 +50,11 @@ Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
   }
   g.cloth_rest_length2.assign(g.cloth.edges.size(), 0.0);
   return g;
+}
+
+int ContactGeometry::obstacle_mesh_of(int v) const {
+  const auto after = std::upper_bound(obstacle_mesh_start.begin(), obstacle_mesh_start.end(), v);
+  return static_cast<int>(after - obstacle_mesh_start.begin()) - 1;
 }
 
 void set_cloth_rest_lengths(ContactGeometry& geometry, const Eigen::VectorXd& cloth_positions) {

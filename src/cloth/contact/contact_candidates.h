@@ -21,9 +21,16 @@ struct ContactGeometry {
   CollisionMesh obstacles;             ///< every obstacle mesh, concatenated
   Eigen::VectorXd obstacle_positions;  ///< 3 per obstacle vertex, world, fixed during a step
   std::vector<double> cloth_rest_length2, obstacle_rest_length2;  ///< per edge, squared
+  std::vector<int> obstacle_mesh_start;  ///< per obstacle mesh, its first vertex's index
   bool self_contact = true;
 
   int cloth_vertices() const { return cloth.vertex_count; }
+  /// The obstacles' vertices at the substep's start (3 per vertex, world); obstacle_positions
+  /// are where they are now. Equal while obstacles are static; friction measures sliding
+  /// against the obstacles' own displacement, the difference of the two.
+  const Eigen::VectorXd& obstacle_start_positions() const { return obstacle_positions; }
+  /// The obstacle mesh (index into ContactObstacles::meshes) that obstacle vertex v belongs to.
+  int obstacle_mesh_of(int v) const;
 };
 
 /// The primitives of the cloth (its triangles and their edges) and of the obstacles.

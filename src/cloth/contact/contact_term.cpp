@@ -214,4 +214,16 @@ ContactStats ContactTerm::stats(const Eigen::VectorXd& x) const {
   return stats;
 }
 
+const ContactSettings& ContactTerm::settings() const {
+  return impl_->settings;
+}
+
+std::optional<double> ContactTerm::ground_height() const {
+  return impl_->ground;
+}
+
+const ContactGeometry& ContactTerm::geometry() const {
+  return impl_->geometry;
+}
+
 }  // namespace animkit
