@@ -17,6 +17,11 @@ void add_world_options(CLI::App& command, WorldArgs& args) {
       ->capture_default_str();
   command.add_flag("--no-self-contact", args.no_self_contact,
                    "With --sphere or --ground: let the cloth pass through itself");
+  command
+      .add_option("--friction", args.friction,
+                  "With --sphere or --ground: Coulomb friction coefficient of every contact "
+                  "(cloth on spheres, ground and itself; 0: frictionless)")
+      ->capture_default_str();
   command.add_option("--wind", args.wind,
                      "Wind velocity X,Y,Z in m/s: air drag and wind on the cloth's triangles");
   command.add_option("--gust", args.gust, "With --wind: the gusts' peak velocity X,Y,Z in m/s");
@@ -48,9 +53,11 @@ Result<void> apply_world_args(const WorldArgs& args, ClothWorldDesc& world) {
   for (std::size_t i = 0; i < args.spheres.size(); ++i) {
     auto sphere = sphere_of(args.spheres[i], static_cast<int>(i));
     if (!sphere) return fail(sphere.error().message);
+    sphere->friction = args.friction;
     world.colliders.push_back(std::move(*sphere));
   }
-  if (args.ground) world.ground = GroundDesc{.height = *args.ground};
+  if (args.ground) world.ground = GroundDesc{.height = *args.ground, .friction = args.friction};
+  world.self_friction = args.friction;
   world.contact.thickness = args.thickness;
   world.contact.self_contact = !args.no_self_contact;
   if (!args.wind.empty() || !args.gust.empty()) {

@@ -17,6 +17,7 @@ struct WorldArgs {
   std::optional<double> ground;      ///< --ground Y: a floor the cloth rests on (m)
   double thickness = 2e-3;           ///< --thickness: contact distance dhat (m)
   bool no_self_contact = false;      ///< --no-self-contact
+  double friction = 0.3;             ///< --friction: mu of every contact (0: frictionless)
   std::string wind;                  ///< --wind "X,Y,Z" (m/s); empty: still air, no air term
   std::string gust;                  ///< --gust "X,Y,Z" (m/s): the gusts' peak on top of it
 

@@ -29,6 +29,7 @@ std::optional<Error> ClothWorldDesc::validate() const {
   }
   if (has_contact()) {
     if (auto error = contact.validate()) return error;
+    if (auto error = friction_settings().validate()) return error;
   }
   if (air) {
     if (auto error = air->validate()) return error;
@@ -41,6 +42,22 @@ std::optional<Error> ClothWorldDesc::validate() const {
                  std::to_string(frames)};
   }
   return std::nullopt;
+}
+
+FrictionSettings ClothWorldDesc::friction_settings() const {
+  FrictionSettings friction;
+  for (const ColliderDesc& c : colliders) friction.obstacles.push_back(c.friction);
+  friction.ground = ground ? ground->friction : 0.0;
+  friction.self = contact.self_contact ? self_friction : 0.0;
+  friction.max_passes = friction_passes;
+  return friction;
+}
+
+bool ClothWorldDesc::has_friction() const {
+  const FrictionSettings f = friction_settings();
+  return has_contact() &&
+         (f.ground > 0.0 || f.self > 0.0 ||
+          std::any_of(f.obstacles.begin(), f.obstacles.end(), [](double mu) { return mu > 0.0; }));
 }
 
 Result<ClothDesc> build_world_cloth(const ClothWorldDesc& desc) {
@@ -99,6 +116,14 @@ Result<ClothWorld> build_cloth_world(const ClothWorldDesc& desc) {
     contact = std::move(*term);
     if (auto ok = sim->add_energy_term(contact); !ok) return fail(ok.error().message);
   }
+  std::shared_ptr<FrictionTerm> friction;
+  if (desc.has_friction()) {
+    // After contact: friction lags the contact term's pairs.
+    auto term = FrictionTerm::create(contact, desc.friction_settings());
+    if (!term) return fail(term.error().message);
+    friction = std::move(*term);
+    if (auto ok = sim->add_energy_term(friction); !ok) return fail(ok.error().message);
+  }
   std::shared_ptr<AirTerm> air;
   if (desc.air) {
     auto term = AirTerm::create(sim->model(), *desc.air);
@@ -106,7 +131,8 @@ Result<ClothWorld> build_cloth_world(const ClothWorldDesc& desc) {
     air = std::move(*term);
     if (auto ok = sim->add_energy_term(air); !ok) return fail(ok.error().message);
   }
-  return ClothWorld{std::move(*sim), std::move(colliders), std::move(contact), std::move(air)};
+  return ClothWorld{std::move(*sim), std::move(colliders), std::move(contact), std::move(friction),
+                    std::move(air)};
 }
 
 }  // namespace animkit

@@ -60,6 +60,7 @@ std::string cloth_metrics_json(const ClothRunInfo& info, std::span<const StepRep
       step["contact_pairs"] = r.contact_pairs;
       step["min_contact_distance"] = r.min_contact_distance;
       step["step_bound_min"] = r.step_bound_min;
+      step["friction_iterations"] = r.friction_iterations;
     }
     per_step.push_back(std::move(step));
   }

@@ -37,7 +37,7 @@ class SceneReader {
       fields.finish();
       desc.ground = g;
     }
-    if (const auto* contact = scene.object("contact")) read_contact(*contact, desc.contact);
+    if (const auto* contact = scene.object("contact")) read_contact(*contact, desc);
     if (const auto* wind = scene.object("wind")) desc.air = read_air(*wind);
     if (const auto* solver = scene.object("solver")) read_solver(*solver, desc.simulation);
     desc.time_step = scene.number("dt").value_or(desc.time_step);
@@ -187,8 +187,11 @@ class SceneReader {
     return c;
   }
 
-  static void read_contact(const nlohmann::json& object, ContactSettings& contact) {
+  static void read_contact(const nlohmann::json& object, ClothWorldDesc& desc) {
     JsonFields fields(object, "contact");
+    ContactSettings& contact = desc.contact;
+    desc.self_friction = fields.number("self_friction").value_or(desc.self_friction);
+    desc.friction_passes = fields.integer("friction_passes").value_or(desc.friction_passes);
     contact.thickness = fields.number("thickness").value_or(contact.thickness);
     contact.stiffness = fields.number("stiffness").value_or(contact.stiffness);
     contact.self_contact = fields.boolean("self_contact").value_or(contact.self_contact);

@@ -43,6 +43,7 @@ TEST(ClothWorld, ContactIsWiredAndReportsEachStep) {
   auto world = build_cloth_world(sheet_over_ball());
   ASSERT_TRUE(world) << world.error().message;
   ASSERT_TRUE(world->contact);
+  ASSERT_TRUE(world->friction);  // the default coefficients are not zero
   ASSERT_EQ(world->colliders.size(), 1u);
   // Newton gets room for impacts.
   EXPECT_GE(std::get<NewtonSettings>(world->simulator.options().integrator).max_iterations,
@@ -51,6 +52,18 @@ TEST(ClothWorld, ContactIsWiredAndReportsEachStep) {
   ASSERT_TRUE(step) << step.error().message;
   EXPECT_TRUE(step->has_contact);
   EXPECT_GT(step->min_contact_distance, 0.0);
+}
+
+TEST(ClothWorld, NoFrictionTermWhenEveryCoefficientIsZero) {
+  ClothWorldDesc desc = sheet_over_ball();
+  desc.colliders[0].friction = 0.0;
+  desc.ground->friction = 0.0;
+  desc.self_friction = 0.0;
+  auto world = build_cloth_world(desc);
+  ASSERT_TRUE(world) << world.error().message;
+  EXPECT_FALSE(world->friction);
+  desc.friction_passes = 0;
+  EXPECT_EQ(build_cloth_world(desc).error().message, "friction passes must be at least 1, got 0");
 }
 
 TEST(ClothWorld, PlacesAndPinsTheGrid) {

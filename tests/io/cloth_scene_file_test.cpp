@@ -43,7 +43,8 @@ TEST(ClothSceneFile, ReadsEveryPart) {
                       "rotation": {"axis": [0, 1, 0], "degrees": 45}}]},
       {"shape": "capsule", "radius": 0.1, "half_length": 0.2, "position": [2, 0, 0]}],
     "ground": {"height": -0.1, "friction": 0.4},
-    "contact": {"thickness": 0.004, "self_contact": false},
+    "contact": {"thickness": 0.004, "self_contact": false, "self_friction": 0.2,
+                "friction_passes": 2},
     "wind": {"velocity": [3, 0, 0], "gust": [1, 0, 0], "gust_frequency": 0.25},
     "solver": {"integrator": "implicit-multigrid", "tolerance": 1e-4},
     "dt": 0.02, "frames": 12})");
@@ -69,6 +70,8 @@ TEST(ClothSceneFile, ReadsEveryPart) {
   EXPECT_DOUBLE_EQ(scene->ground->friction, 0.4);
   EXPECT_DOUBLE_EQ(scene->contact.thickness, 0.004);
   EXPECT_FALSE(scene->contact.self_contact);
+  EXPECT_DOUBLE_EQ(scene->self_friction, 0.2);
+  EXPECT_EQ(scene->friction_passes, 2);
   ASSERT_TRUE(scene->air);
   EXPECT_EQ(scene->air->wind.velocity, Vec3(3, 0, 0));
   EXPECT_DOUBLE_EQ(*tolerance_of(scene->simulation.integrator), 1e-4);

@@ -13,6 +13,7 @@
 #include "animkit/cloth/aerodynamics.h"
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/contact.h"
+#include "animkit/cloth/friction.h"
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/mesh_cloth.h"
 #include "animkit/collision/collider.h"
@@ -36,12 +37,21 @@ struct ClothWorldDesc {
   std::optional<GroundDesc> ground;     ///< none by default (the lab's cloth touches nothing)
   /// Contact settings, used when there is a collider or a ground.
   ContactSettings contact;
+  /// Coulomb coefficient mu between two parts of the cloth (self-contact), finite, >= 0.
+  double self_friction = 0.3;
+  /// Friction's lagging passes per substep (FrictionSettings::max_passes), >= 1.
+  int friction_passes = 1;
   std::optional<AirSettings> air;  ///< wind and air drag; none by default (still, no drag)
   SimulationOptions simulation;    ///< the integrator and its settings
   double time_step = 1.0 / 60.0;   ///< s per frame, in kTimeStepRange (the lab's 1/60)
   int frames = 300;                ///< frames to simulate, in [1, kMaxWorldFrames]
 
   bool has_contact() const { return !colliders.empty() || ground.has_value(); }
+  /// Friction's settings: each collider's and the ground's coefficient, self_friction (0
+  /// without self-contact), the passes.
+  FrictionSettings friction_settings() const;
+  /// Contact with some nonzero friction coefficient.
+  bool has_friction() const;
   /// The first problem: the sheet's options, a collider's, the ground's, contact or air
   /// settings, the solver's, a time step or frame count out of range. Building can still fail
   /// on what needs the built cloth (a particle starting inside a collider).
@@ -56,13 +66,15 @@ constexpr int kMaxWorldFrames = 1'000'000;
 /// while new parts of the cloth arrive at a collider.
 constexpr int kContactNewtonIterations = 300;
 
-/// A built world: the simulator (with contact and air terms added) and the colliders as they
-/// stand at time 0 (for drawing and export).
+/// A built world: the simulator (with contact, friction and air terms added) and the colliders as
+/// they stand at time 0 (for drawing and export).
 struct ClothWorld {
   ClothSimulator simulator;
   std::vector<Collider> colliders;
   std::shared_ptr<ContactTerm> contact;  ///< null without colliders or ground
-  std::shared_ptr<AirTerm> air;          ///< null in still air
+  /// Null without contact, or when every friction coefficient is 0.
+  std::shared_ptr<FrictionTerm> friction;
+  std::shared_ptr<AirTerm> air;  ///< null in still air
 };
 
 /// The sheet's description (grid or mesh), validated.
