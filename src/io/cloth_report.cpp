@@ -42,7 +42,14 @@ std::string cloth_metrics_json(const ClothRunInfo& info, std::span<const StepRep
                         {"gradient_norm_end", r.gradient_norm_end},
                         {"converged", r.converged},
                         {"energy", r.energy},
-                        {"ms", r.ms}});
+                        {"ms", r.ms},
+                        {"ms_gradient", r.ms_gradient},
+                        {"ms_hessian", r.ms_hessian},
+                        {"ms_linear_solve", r.ms_linear_solve},
+                        {"ms_line_search", r.ms_line_search},
+                        {"ms_term_updates", r.ms_term_updates},
+                        {"ms_step_bound", r.ms_step_bound},
+                        {"step_bound_min", r.step_bound_min}});
   }
   j["steps"] = std::move(per_step);
   return j.dump(1) + "\n";
