@@ -114,6 +114,8 @@ SmoothedAggregation::SmoothedAggregation(const ClothModel& model, const Multigri
     level.b.setZero(size);
     level.x.setZero(size);
     level.r.setZero(size);
+    level.coupling.clear(level.a.block_rows);
+    level.coupling.assemble();
   }
   const auto coarse_size = 3 * static_cast<Eigen::Index>(levels_.back().a.block_rows);
   coarsest_dense_.setZero(coarse_size, coarse_size);
@@ -160,6 +162,14 @@ void SmoothedAggregation::fill_finest(const BlockHessian& hessian) {
     a.values[spring_blocks_[s][0]] -= hessian.coupling[s];
     a.values[spring_blocks_[s][1]] -= hessian.coupling[s];
   }
+  // The terms' diagonal blocks are in hessian.diagonal already; their couplings go beside.
+  CouplingBlocks& coupling = levels_[0].coupling;
+  coupling.clear(a.block_rows);
+  for (const HessianBlock& block : hessian.extra) {
+    if (options_.coarse_couplings && block.row != block.col)
+      coupling.add(block.row, block.col, block.value);
+  }
+  coupling.assemble();
 }
 
 void SmoothedAggregation::prepare_smoother(Level& level) {
@@ -202,6 +212,11 @@ bool SmoothedAggregation::factorize_coarsest() {
     for (int k = level.a.row_start[i]; k < level.a.row_start[i + 1]; ++k)
       coarsest_dense_.block<3, 3>(3 * i, 3 * level.a.column[k]) = level.a.values[k];
   }
+  const Matrix& e = level.coupling.full();
+  for (int i = 0; i < e.block_rows; ++i) {
+    for (int k = e.row_start[i]; k < e.row_start[i + 1]; ++k)
+      coarsest_dense_.block<3, 3>(3 * i, 3 * e.column[k]) += e.values[k];
+  }
   coarsest_.compute(coarsest_dense_);
   return coarsest_.info() == Eigen::Success;
 }
@@ -212,6 +227,8 @@ bool SmoothedAggregation::update(const BlockHessian& hessian) {
     prepare_smoother(levels_[l]);
     if (options_.resmooth) smooth_prolongator(levels_[l]);
     levels_[l].galerkin.compute(levels_[l].a, levels_[l].p, levels_[l + 1].a);
+    levels_[l].coupling.restrict_to(levels_[l].p, levels_[l + 1].coupling, levels_[l + 1].a,
+                                    levels_[l + 1].diagonal);
   }
   prepare_smoother(levels_.back());
   return factorize_coarsest();
@@ -219,24 +236,30 @@ bool SmoothedAggregation::update(const BlockHessian& hessian) {
 
 void SmoothedAggregation::forward_sweep(Level& level) {
   const Matrix& a = level.a;
+  const Matrix& e = level.coupling.full();
   for (int i = 0; i < a.block_rows; ++i) {
     Eigen::Vector3d sum = level.b.segment<3>(3 * i);
     for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
       if (k != level.diagonal[i])
         sum.noalias() -= a.values[k] * level.x.segment<3>(3 * a.column[k]);
     }
+    for (int k = e.row_start[i]; k < e.row_start[i + 1]; ++k)
+      sum.noalias() -= e.values[k] * level.x.segment<3>(3 * e.column[k]);
     level.x.segment<3>(3 * i).noalias() = level.inverse_diagonal[i] * sum;
   }
 }
 
 void SmoothedAggregation::backward_sweep(Level& level) {
   const Matrix& a = level.a;
+  const Matrix& e = level.coupling.full();
   for (int i = a.block_rows - 1; i >= 0; --i) {
     Eigen::Vector3d sum = level.b.segment<3>(3 * i);
     for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
       if (k != level.diagonal[i])
         sum.noalias() -= a.values[k] * level.x.segment<3>(3 * a.column[k]);
     }
+    for (int k = e.row_start[i]; k < e.row_start[i + 1]; ++k)
+      sum.noalias() -= e.values[k] * level.x.segment<3>(3 * e.column[k]);
     level.x.segment<3>(3 * i).noalias() = level.inverse_diagonal[i] * sum;
   }
 }
@@ -251,6 +274,7 @@ void SmoothedAggregation::cycle(std::size_t l) {
   level.x.setZero();
   for (int s = 0; s < options_.smoothing_sweeps; ++s) forward_sweep(level);
   level.a.multiply(level.x, level.r);
+  level.coupling.full().multiply_add(level.x, level.r);
   level.r = level.b - level.r;
   Level& next = levels_[l + 1];
   level.p.multiply_transpose(level.r, next.b);

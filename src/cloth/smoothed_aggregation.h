@@ -14,6 +14,10 @@
 // solve's own matrix (anisotropic spring blocks), at the cost of a power iteration and the
 // smoothing per level.
 //
+// An energy term's blocks between particles the springs do not join (contact) change pattern
+// from solve to solve: they ride beside each level's fixed pattern (coupling_blocks.h), so
+// every level is still the Galerkin product of the whole Hessian.
+//
 // One application is a V-cycle with a forward block Gauss-Seidel sweep before the coarse
 // correction and a backward one after it: the cycle is then a symmetric positive definite
 // operator, as CG needs.
@@ -25,6 +29,7 @@
 #include "animkit/cloth/cloth_model.h"
 #include "animkit/cloth/multigrid_pcg.h"
 #include "block_sparse_matrix.h"
+#include "coupling_blocks.h"
 #include "galerkin_product.h"
 
 namespace animkit {
@@ -49,6 +54,7 @@ class SmoothedAggregation {
  private:
   struct Level {
     Matrix a;                   // this level's operator (both triangles)
+    CouplingBlocks coupling;    // plus these blocks outside a's pattern (contact, see there)
     std::vector<int> diagonal;  // position of each row's diagonal block
     std::vector<Eigen::Matrix3d> inverse_diagonal;
     // Towards the next level (absent on the coarsest):

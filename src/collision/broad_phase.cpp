@@ -170,12 +170,42 @@ struct HashGrid {
   }
 };
 
+// Sorts entries by cell, stably: least significant digit radix sort (Knuth, TAOCP vol. 3,
+// 5.2.5) over the key's bytes below the grid's cell count, 8 bits a pass. The entries arrive
+// in primitive order, so the result is the (cell, primitive) order of a comparison sort, in
+// time linear in the entries instead of n log n (this sort was the broad phase's main cost).
+void sort_by_cell(std::uint64_t cell_count, std::vector<CellEntry>& entries,
+                  std::vector<CellEntry>& scratch) {
+  int bytes = 0;
+  while (bytes < 8 && (cell_count - 1) >> (8 * bytes) != 0) ++bytes;
+  scratch.resize(entries.size());
+  for (int pass = 0; pass < bytes; ++pass) {
+    const int shift = 8 * pass;
+    std::array<std::size_t, 257> start{};
+    for (const CellEntry& e : entries) ++start[((e.cell >> shift) & 0xff) + 1];
+    for (int d = 0; d < 256; ++d) start[d + 1] += start[d];
+    for (const CellEntry& e : entries) scratch[start[(e.cell >> shift) & 0xff]++] = e;
+    entries.swap(scratch);
+  }
+}
+
 // Stage 3: every box in every cell it overlaps, sorted by (cell, primitive).
-void fill_cells(const HashGrid& grid, const std::vector<Box>& boxes,
-                std::vector<CellEntry>& entries) {
+// A collider primitive whose box misses the box around all of the mesh's boxes pairs with
+// nothing (collider-collider pairs are never wanted): it is left out.
+void fill_cells(const HashGrid& grid, const std::vector<Box>& boxes, int first_collider,
+                std::vector<CellEntry>& entries, std::vector<CellEntry>& scratch) {
   entries.clear();
+  Box mesh_box = boxes[0];
+  for (int p = 1; p < first_collider; ++p) {
+    mesh_box.lo = mesh_box.lo.cwiseMin(boxes[p].lo);
+    mesh_box.hi = mesh_box.hi.cwiseMax(boxes[p].hi);
+  }
   for (int p = 0; p < static_cast<int>(boxes.size()); ++p) {
     const Box& box = boxes[p];
+    if (p >= first_collider && ((box.lo.array() > mesh_box.hi.array()).any() ||
+                                (mesh_box.lo.array() > box.hi.array()).any())) {
+      continue;
+    }
     for (auto i = grid.coordinate(box.lo.x(), 0); i <= grid.coordinate(box.hi.x(), 0); ++i) {
       for (auto j = grid.coordinate(box.lo.y(), 1); j <= grid.coordinate(box.hi.y(), 1); ++j) {
         for (auto k = grid.coordinate(box.lo.z(), 2); k <= grid.coordinate(box.hi.z(), 2); ++k) {
@@ -184,7 +214,8 @@ void fill_cells(const HashGrid& grid, const std::vector<Box>& boxes,
       }
     }
   }
-  std::sort(entries.begin(), entries.end());
+  const auto cells = static_cast<std::uint64_t>(grid.dims[0] * grid.dims[1] * grid.dims[2]);
+  sort_by_cell(cells, entries, scratch);
 }
 
 // Stage 4: the wanted pairs of primitives sharing a cell, with overlapping boxes, reported from
@@ -246,7 +277,7 @@ Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCand
   build_boxes(mesh, collider, radius, ranges, boxes_);
   if (boxes_.empty()) return {};
   const HashGrid grid = HashGrid::fit(boxes_);
-  fill_cells(grid, boxes_, entries_);
+  fill_cells(grid, boxes_, ranges.offsets[3], entries_, scratch_);
   collect_pairs(grid, boxes_, entries_, ranges, mesh.mesh, out);
   std::sort(out.vertex_triangle.begin(), out.vertex_triangle.end());
   std::sort(out.edge_edge.begin(), out.edge_edge.end());

@@ -55,11 +55,17 @@ std::string cloth_metrics_json(const ClothRunInfo& info, std::span<const StepRep
                                    {"gradient_norm_end", r.gradient_norm_end},
                                    {"converged", r.converged},
                                    {"energy", r.energy},
-                                   {"ms", r.ms}};
+                                   {"ms", r.ms},
+                                   {"ms_gradient", r.ms_gradient},
+                                   {"ms_hessian", r.ms_hessian},
+                                   {"ms_linear_solve", r.ms_linear_solve},
+                                   {"ms_line_search", r.ms_line_search},
+                                   {"ms_term_updates", r.ms_term_updates},
+                                   {"ms_step_bound", r.ms_step_bound},
+                                   {"step_bound_min", r.step_bound_min}};
     if (r.has_contact) {
       step["contact_pairs"] = r.contact_pairs;
       step["min_contact_distance"] = r.min_contact_distance;
-      step["step_bound_min"] = r.step_bound_min;
       step["friction_iterations"] = r.friction_iterations;
     }
     per_step.push_back(std::move(step));

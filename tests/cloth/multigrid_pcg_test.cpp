@@ -1,12 +1,13 @@
-#include "animkit/cloth/block_jacobi_pcg.h"
 #include "animkit/cloth/multigrid_pcg.h"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <random>
 
+#include "animkit/cloth/block_jacobi_pcg.h"
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/hessian_pattern.h"
@@ -170,6 +171,109 @@ TEST(MultigridPcg, IterationsBoundedUnderRefinementAndStiffness) {
   Eigen::VectorXd x(system.b.size());
   const PcgResult reference = jacobi.solve(system.a, system.b, x, 1e-6, 5000);
   EXPECT_GT(reference.iterations, 4 * finer);
+}
+
+// Contact-like couplings: a stiff PSD block k n n^T pushing particle i off particle j along n,
+// for pairs far apart on the grid (a cloth folded onto itself), added as an energy term adds
+// them (BlockHessian::extra, diagonal blocks also in `diagonal`).
+void add_far_couplings(NewtonSystem& system, int cells, double k) {
+  const int side = cells + 1;
+  std::mt19937 rng(5);
+  std::normal_distribution<double> normal;
+  for (int i = 0; i < side / 2; ++i) {
+    for (int j = 0; j < side; j += 3) {
+      const int a = grid_index(cells, i, j), b = grid_index(cells, cells - i, j);
+      if (system.model.pinned[a] || system.model.pinned[b] || a == b) continue;
+      const Eigen::Vector3d n = Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+      const Eigen::Matrix3d block = k * n * n.transpose();
+      system.a.diagonal[a] += block;
+      system.a.diagonal[b] += block;
+      system.a.extra.push_back({a, a, block});
+      system.a.extra.push_back({b, b, block});
+      system.a.extra.push_back({a, b, -block});
+    }
+  }
+}
+
+Eigen::VectorXd dense_solve(const NewtonSystem& system) {
+  const auto size = system.b.size();
+  Eigen::MatrixXd dense(size, size);
+  Eigen::VectorXd unit = Eigen::VectorXd::Zero(size), column(size);
+  for (Eigen::Index c = 0; c < size; ++c) {
+    unit[c] = 1.0;
+    system.a.multiply(system.model, unit, column);
+    dense.col(c) = column;
+    unit[c] = 0.0;
+  }
+  return dense.llt().solve(system.b);
+}
+
+NewtonSystem coupled_system(int cells, double k) {
+  NewtonSystem system = hanging_system(cotton(cells, 1000.0), 10);
+  add_far_couplings(system, cells, k);
+  return system;
+}
+
+TEST(MultigridPcg, MatchesDenseSolveWithFarCouplings) {
+  const NewtonSystem system = coupled_system(16, 1e5);
+  ASSERT_FALSE(system.a.extra.empty());
+  MultigridPcg pcg(system.model);
+  EXPECT_GT(pcg.level_count(), 1);
+  Eigen::VectorXd x(system.b.size());
+  const PcgResult result = pcg.solve(system.a, system.b, x, 1e-9, 300);
+  EXPECT_TRUE(result.converged);
+  const Eigen::VectorXd expected = dense_solve(system);
+  EXPECT_LE((x - expected).norm(), 1e-6 * expected.norm());
+}
+
+// With a single level the V-cycle is the coarsest level's Cholesky solve: exact only if the
+// couplings are part of that level's operator, and then CG needs one iteration.
+TEST(MultigridPcg, CouplingsArePartOfTheOperatorOnEveryLevel) {
+  const NewtonSystem system = coupled_system(8, 1e5);
+  MultigridPcg pcg(system.model, {.coarsest_nodes = 1000});
+  EXPECT_EQ(pcg.level_count(), 1);
+  Eigen::VectorXd x(system.b.size());
+  const PcgResult result = pcg.solve(system.a, system.b, x, 1e-9, 50);
+  EXPECT_TRUE(result.converged);
+  EXPECT_EQ(result.iterations, 1);
+}
+
+TEST(MultigridPcg, PreconditionerWithCouplingsIsSymmetricPositiveDefinite) {
+  const NewtonSystem system = coupled_system(16, 1e6);
+  MultigridPcg pcg(system.model);
+  Eigen::VectorXd x(system.b.size());
+  (void)pcg.solve(system.a, system.b, x, 1e-2, 100);
+  std::mt19937 rng(13);
+  std::normal_distribution<double> normal;
+  Eigen::VectorXd r1(system.b.size()), r2(system.b.size()), z1(r1.size()), z2(r1.size());
+  for (int trial = 0; trial < 5; ++trial) {
+    for (Eigen::Index k = 0; k < r1.size(); ++k) {
+      const int particle = static_cast<int>(k / 3);
+      const bool free = !system.model.pinned[particle];
+      r1[k] = free ? normal(rng) : 0.0;
+      r2[k] = free ? normal(rng) : 0.0;
+    }
+    pcg.apply_preconditioner(r1, z1);
+    pcg.apply_preconditioner(r2, z2);
+    EXPECT_GT(r1.dot(z1), 0.0);
+    EXPECT_NEAR(r1.dot(z2), r2.dot(z1), 1e-10 * std::sqrt(r1.dot(z1) * r2.dot(z2)));
+  }
+}
+
+// Stiff couplings between far particles are what the springs' hierarchy cannot see: with
+// only their diagonal blocks in it, the coarse levels miss them; carried into every level,
+// they cost CG far fewer iterations.
+TEST(MultigridPcg, CouplingsInTheHierarchySaveIterations) {
+  const NewtonSystem system = coupled_system(32, 1e4);
+  int count[2] = {};
+  for (const bool coarse_couplings : {false, true}) {
+    MultigridPcg pcg(system.model, {.coarse_couplings = coarse_couplings});
+    Eigen::VectorXd x(system.b.size());
+    const PcgResult result = pcg.solve(system.a, system.b, x, 1e-6, 3000);
+    EXPECT_TRUE(result.converged);
+    count[coarse_couplings] = result.iterations;
+  }
+  EXPECT_LT(count[1], 0.6 * count[0]) << count[0] << " -> " << count[1];
 }
 
 TEST(MultigridPcg, ZeroRightHandSideGivesZero) {

@@ -22,6 +22,10 @@ struct MultigridOptions {
   /// Smooth the prolongator with each solve's own matrix instead of, once, with the springs'
   /// isotropic stiffness (see smoothed_aggregation.h).
   bool resmooth = false;
+  /// Carry an energy term's blocks between particles the springs do not join (contact) into
+  /// every level, so each level is the Galerkin product of the whole Hessian; false: only
+  /// their contributions to the diagonal blocks reach the preconditioner.
+  bool coarse_couplings = true;
 };
 
 class SmoothedAggregation;

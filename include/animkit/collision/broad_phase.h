@@ -11,7 +11,7 @@
 // 16 cells each on average), the entries sorted by cell, and the pairs sharing a cell whose
 // boxes overlap reported from the one cell holding the lower corner of the boxes' intersection
 // (so once, without a global de-duplication). Cost: near linear in the number of primitives
-// plus candidates (a sort of the cell entries). Output sorted, so deterministic.
+// plus candidates (a radix sort of the cell entries). Output sorted, so deterministic.
 //
 // Self pairs that share a vertex (a vertex and its own triangles, edges with a common end) are
 // never reported: their distance is zero by construction and IPC does not treat them as contact.
@@ -85,7 +85,7 @@ class BroadPhase {
 
  private:
   std::vector<broad_phase_detail::Box> boxes_;
-  std::vector<broad_phase_detail::CellEntry> entries_;
+  std::vector<broad_phase_detail::CellEntry> entries_, scratch_;
 };
 
 }  // namespace animkit
