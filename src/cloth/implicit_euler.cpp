@@ -121,8 +121,18 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
   double gradient_norm = start_norm;
   const GradientStop stop =
       begin_implicit_substep(potential_, start_norm, options_.tolerance, report);
-  bool converged = stop.reached(gradient_norm);
+  // Converged: |grad g| small and every term at the substep's end (a moving collider at its
+  // pose at t + h: until then g is not yet the end's potential).
+  bool converged = stop.reached(gradient_norm) && potential_.terms_settled();
   for (int k = 0; !converged && std::isfinite(gradient_norm) && k < options_.max_iterations; ++k) {
+    if (stop.reached(gradient_norm)) {
+      // x minimizes g with the terms where they are, but a term is short of the end: it moves
+      // on from x (arrive_at_iterate updates the terms), then Newton resumes from there.
+      gradient_norm = arrive_at_iterate(report);
+      ++report.newton_iterations;
+      converged = stop.reached(gradient_norm) && potential_.terms_settled();
+      continue;
+    }
     IterationRecord record;
     // g itself is needed only for the record: the line search works with differences.
     if (options_.record_iterations) record.objective = potential_.value(x_);
@@ -135,7 +145,7 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
     if (!decrease) break;  // no decrease found: keep x (reported as not converged)
     gradient_norm = accept_step(report);
     ++report.newton_iterations;
-    converged = stop.reached(gradient_norm);
+    converged = stop.reached(gradient_norm) && potential_.terms_settled();
 
     record.gradient_norm = gradient_norm;
     record.ms = ms_since(substep_start);

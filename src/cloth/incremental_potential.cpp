@@ -78,6 +78,10 @@ void IncrementalPotential::update_terms(const Eigen::VectorXd& x) {
   for (const auto& term : terms_) term->update(x);
 }
 
+bool IncrementalPotential::terms_settled() const {
+  return std::all_of(terms_.begin(), terms_.end(), [](const auto& term) { return term->settled(); });
+}
+
 double IncrementalPotential::max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) {
   double bound = 1.0;
   for (const auto& term : terms_) bound = std::min(bound, term->max_step(x, step));

@@ -47,6 +47,8 @@ class IncrementalPotential {
   /// The largest fraction in (0, 1] of `step` every term admits from x (EnergyTerm::max_step);
   /// 1 without terms.
   double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step);
+  /// Whether every term has reached the substep's end (EnergyTerm::settled).
+  bool terms_settled() const;
   /// Whether any term may bound the step (then the minimization starts from an admissible point
   /// between x_n and y instead of from y itself).
   bool has_terms() const { return !terms_.empty(); }
