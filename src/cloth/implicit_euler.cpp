@@ -269,11 +269,12 @@ double ImplicitEuler::accept_step(StepReport& report) {
   return arrive_at_iterate(report);
 }
 
-// At a new iterate x: the terms see it (e.g. gather contact pairs), then grad g there; returns
-// |grad g|.
+// At a new iterate x: the terms move their world on (a collider, pushing x along), then see x
+// (e.g. gather contact pairs), then grad g there; returns |grad g|.
 double ImplicitEuler::arrive_at_iterate(StepReport& report) {
   auto t = StageClock::now();
   if (potential_.has_terms()) {
+    potential_.advance_terms(x_);
     potential_.update_terms(x_);
     report.ms_term_updates += ms_since(t);
     t = StageClock::now();

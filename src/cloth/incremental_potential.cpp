@@ -74,6 +74,10 @@ void IncrementalPotential::prepare(const ClothState& state, double h,
   for (const auto& term : terms_) term->prepare(state, h);
 }
 
+void IncrementalPotential::advance_terms(Eigen::VectorXd& x) {
+  for (const auto& term : terms_) term->advance(x);
+}
+
 void IncrementalPotential::update_terms(const Eigen::VectorXd& x) {
   for (const auto& term : terms_) term->update(x);
 }

@@ -74,6 +74,7 @@ class ContactTerm final : public EnergyTerm {
 
   std::string_view name() const override { return "contact"; }
   void prepare(const ClothState& state, double h) override;
+  void advance(Eigen::VectorXd& x) override;
   void update(const Eigen::VectorXd& x) override;
   double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) override;
   double value(const Eigen::VectorXd& x) const override;

@@ -28,6 +28,11 @@ class EnergyTerm {
   /// evaluation (e.g. to gather contact pairs, freeze an axis, or aim a collider at its pose
   /// at state.time + h).
   virtual void prepare(const ClothState& /*state*/, double /*h*/) {}
+  /// Called at every new iterate x of the minimization, before update(): a term whose world
+  /// moves toward the substep's end (a collider) moves it there as far as it can, and may
+  /// move x along with it (the cloth a collider pushes), keeping x admissible (by continuous
+  /// collision detection) and pinned particles where they are. Default: nothing moves.
+  virtual void advance(Eigen::VectorXd& /*x*/) {}
   /// Called at every new iterate x of the minimization (the starting point, then each
   /// accepted step) before g's gradient and Hessian are taken there: e.g. to gather the contact
   /// pairs close to x.

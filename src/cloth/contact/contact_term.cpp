@@ -185,11 +185,15 @@ bool ContactTerm::settled() const {
   return impl_->moving.settled();
 }
 
+void ContactTerm::advance(Eigen::VectorXd& x) {
+  // Moving colliders advance toward the substep's end, pushing the cloth in their way, as far
+  // as CCD allows (moving_obstacles.h), then stay there for this iteration's line search.
+  impl_->moving.advance(impl_->geometry, impl_->finder, impl_->model->pinned, impl_->ground,
+                        impl_->settings.thickness, impl_->settings.min_separation, x,
+                        impl_->pairs);
+}
+
 void ContactTerm::update(const Eigen::VectorXd& x) {
-  // Moving colliders first advance toward the substep's end as far as CCD allows against the
-  // cloth at x (moving_obstacles.h), then stay there for this iteration's line search.
-  impl_->moving.advance(impl_->geometry, impl_->finder, x, impl_->settings.thickness,
-                        impl_->settings.min_separation, impl_->pairs);
   // Every pair within dhat of x: what g's gradient and Hessian at x need. A non-finite x finds
   // none (g's own gradient there is not finite, and Newton stops).
   if (!impl_->finder.gather(impl_->geometry, x, nullptr, impl_->settings.thickness, impl_->ground,
