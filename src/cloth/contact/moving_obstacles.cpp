@@ -1,5 +1,6 @@
 #include "moving_obstacles.h"
 
+#include <array>
 #include <utility>
 
 namespace animkit {
@@ -27,48 +28,71 @@ void MovingObstacles::begin_substep(ContactGeometry& g, double t_end) {
   if (settled_) poses_ = aims_;
 }
 
-// The faces' normals and the particles' gaps are taken where the obstacles are now; a
-// particle over several faces takes the largest push.
+namespace {
+
+// The barycentric coordinates (b, c) of e's projection onto the plane of (0, u, v), unit
+// normal `normal`, twice the area `twice_area`; inside the triangle when b, c >= 0, b + c <= 1.
+std::array<double, 2> projected_barycentric(const Vec3& e, const Vec3& u, const Vec3& v,
+                                            const Vec3& normal, double twice_area) {
+  return {normal.dot(e.cross(v)) / twice_area, normal.dot(u.cross(e)) / twice_area};
+}
+
+bool inside(const std::array<double, 2>& w) {
+  return w[0] >= 0.0 && w[1] >= 0.0 && w[0] + w[1] <= 1.0;
+}
+
+}  // namespace
+
+// Two cases, each a point over a face: a particle over an obstacle face, and an obstacle vertex
+// under a cloth triangle (a coarse cloth meets a finer collider through its triangles'
+// insides). The normal and the gap are taken where everything is now; the face's or the
+// vertex's move along the normal, less the gap beyond half the contact distance, is what the
+// cloth lacks. A particle pushed several ways takes the largest push.
 void MovingObstacles::push_cloth(const ContactGeometry& g, const std::vector<char>& pinned,
                                  const Eigen::VectorXd& x, double radius,
                                  const std::vector<ContactPair>& pairs) {
   const int n = g.cloth_vertices();
   push_.setZero(x.size());
   pushed_.assign(static_cast<std::size_t>(n), 0.0);
-  const auto obstacle = [&](int v) -> Vec3 {
-    return g.obstacle_positions.segment<3>(3 * (v - n));
+  const auto position = [&](int v) -> Vec3 {
+    return v < n ? Vec3(x.segment<3>(3 * v)) : Vec3(g.obstacle_positions.segment<3>(3 * (v - n)));
   };
   const auto moving = [&](int v) -> Vec3 { return move_.segment<3>(3 * (v - n)); };
+  const auto push = [&](int p, double lack, const Vec3& normal) {
+    if (pinned[static_cast<std::size_t>(p)] || !(lack > pushed_[static_cast<std::size_t>(p)]))
+      return;
+    pushed_[static_cast<std::size_t>(p)] = lack;
+    push_.segment<3>(3 * p) = lack * normal;
+  };
   for (const ContactPair& pair : pairs) {
+    if (pair.kind != ContactKind::point_triangle) continue;
     const int p = pair.vertices[0];
-    if (pair.kind != ContactKind::point_triangle || p >= n || pair.vertices[1] < n ||
-        pinned[static_cast<std::size_t>(p)]) {
-      continue;
-    }
-    const Vec3 a = obstacle(pair.vertices[1]), b = obstacle(pair.vertices[2]),
-               c = obstacle(pair.vertices[3]);
-    Vec3 normal = (b - a).cross(c - a);
+    const bool cloth_point = p < n;
+    if (cloth_point == (pair.vertices[1] < n)) continue;  // cloth-cloth (obstacle-obstacle: none)
+    const Vec3 a = position(pair.vertices[1]);
+    const Vec3 u = position(pair.vertices[2]) - a, v = position(pair.vertices[3]) - a;
+    Vec3 normal = u.cross(v);
     const double twice_area = normal.norm();
     if (!(twice_area > 0.0)) continue;
     normal /= twice_area;
-    const Vec3 e = x.segment<3>(3 * p) - a;
+    const Vec3 e = position(p) - a;
     double gap = e.dot(normal);
     if (gap < 0.0) {
       normal = -normal;
       gap = -gap;
     }
-    // Only a particle over the face itself: barycentric coordinates of its projection.
-    const Vec3 projected = e - gap * normal;
-    const double wb = normal.dot(projected.cross(c - a)) / twice_area;
-    const double wc = normal.dot((b - a).cross(projected)) / twice_area;
-    if (wb < 0.0 || wc < 0.0 || wb + wc > 1.0) continue;
-    // How far the face comes toward p, past what keeps p half the contact distance off it.
-    const Vec3 face_move = (1.0 - wb - wc) * moving(pair.vertices[1]) +
-                           wb * moving(pair.vertices[2]) + wc * moving(pair.vertices[3]);
-    const double lack = face_move.dot(normal) - (gap - 0.5 * radius);
-    if (lack > pushed_[static_cast<std::size_t>(p)]) {
-      pushed_[static_cast<std::size_t>(p)] = lack;
-      push_.segment<3>(3 * p) = lack * normal;
+    const std::array<double, 2> w = projected_barycentric(e - gap * normal, u, v, normal,
+                                                          twice_area);
+    if (!inside(w)) continue;
+    if (cloth_point) {
+      // The obstacle face comes toward p along `normal` (pointing from the face to p).
+      const Vec3 face_move = (1.0 - w[0] - w[1]) * moving(pair.vertices[1]) +
+                             w[0] * moving(pair.vertices[2]) + w[1] * moving(pair.vertices[3]);
+      push(p, face_move.dot(normal) - (gap - 0.5 * radius), normal);
+    } else {
+      // The obstacle vertex comes toward the cloth triangle along -normal: push it whole.
+      const double lack = -moving(p).dot(normal) - (gap - 0.5 * radius);
+      for (int i = 1; i < 4; ++i) push(pair.vertices[i], lack, -normal);
     }
   }
 }
