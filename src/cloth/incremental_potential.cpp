@@ -83,7 +83,8 @@ void IncrementalPotential::update_terms(const Eigen::VectorXd& x) {
 }
 
 bool IncrementalPotential::terms_settled() const {
-  return std::all_of(terms_.begin(), terms_.end(), [](const auto& term) { return term->settled(); });
+  return std::all_of(terms_.begin(), terms_.end(),
+                     [](const auto& term) { return term->settled(); });
 }
 
 double IncrementalPotential::max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) {

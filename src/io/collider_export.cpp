@@ -1,7 +1,6 @@
 #include "animkit/io/collider_export.h"
 
 #include <algorithm>
-
 #include <sstream>
 
 namespace animkit {

@@ -73,7 +73,7 @@ Result<void> ContactPairFinder::gather(const ContactGeometry& g, const Eigen::Ve
   }
   const MeshMotion cloth{g.cloth, x, end_};
   const MeshMotion obstacles{g.obstacles, g.obstacle_positions,
-                            obstacle_end ? *obstacle_end : g.obstacle_positions};
+                             obstacle_end ? *obstacle_end : g.obstacle_positions};
   const bool any_obstacle = !g.obstacles.triangles.empty();
   if (auto ok = broad_phase_.find(cloth, radius, candidates_, any_obstacle ? &obstacles : nullptr);
       !ok) {

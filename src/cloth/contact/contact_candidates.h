@@ -17,8 +17,8 @@
 namespace animkit {
 
 struct ContactGeometry {
-  CollisionMesh cloth;                 ///< the cloth's triangles and edges
-  CollisionMesh obstacles;             ///< every obstacle mesh, concatenated
+  CollisionMesh cloth;      ///< the cloth's triangles and edges
+  CollisionMesh obstacles;  ///< every obstacle mesh, concatenated
   /// 3 per obstacle vertex, world, m: where the obstacles are now. Fixed during a line search;
   /// moving colliders advance between iterates (moving_obstacles.h).
   Eigen::VectorXd obstacle_positions;

@@ -189,8 +189,7 @@ void ContactTerm::advance(Eigen::VectorXd& x) {
   // Moving colliders advance toward the substep's end, pushing the cloth in their way, as far
   // as CCD allows (moving_obstacles.h), then stay there for this iteration's line search.
   impl_->moving.advance(impl_->geometry, impl_->finder, impl_->model->pinned, impl_->ground,
-                        impl_->settings.thickness, impl_->settings.min_separation, x,
-                        impl_->pairs);
+                        impl_->settings.thickness, impl_->settings.min_separation, x, impl_->pairs);
 }
 
 void ContactTerm::update(const Eigen::VectorXd& x) {

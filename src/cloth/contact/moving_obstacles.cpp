@@ -15,7 +15,7 @@ void MovingObstacles::add(Collider collider, int first_vertex) {
 
 void MovingObstacles::begin_substep(ContactGeometry& g, double t_end) {
   g.obstacle_start_positions = g.obstacle_positions;  // same size: no allocation after the first
-  end_ = g.obstacle_positions;  // fixed meshes end where they are
+  end_ = g.obstacle_positions;                        // fixed meshes end where they are
   for (std::size_t c = 0; c < colliders_.size(); ++c) {
     aims_[c] = targets_[c] ? *targets_[c] : pose_at(colliders_[c].model().desc.motion, t_end);
     const auto& local = colliders_[c].model().surface.vertices;
@@ -81,8 +81,8 @@ void MovingObstacles::push_cloth(const ContactGeometry& g, const std::vector<cha
       normal = -normal;
       gap = -gap;
     }
-    const std::array<double, 2> w = projected_barycentric(e - gap * normal, u, v, normal,
-                                                          twice_area);
+    const std::array<double, 2> w =
+        projected_barycentric(e - gap * normal, u, v, normal, twice_area);
     if (!inside(w)) continue;
     if (cloth_point) {
       // The obstacle face comes toward p along `normal` (pointing from the face to p).
