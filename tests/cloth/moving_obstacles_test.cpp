@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 // Before the audit's header: its namespace animkit::testing would hide gtest's ::testing here.
@@ -17,7 +18,6 @@
 #include "animkit/io/collider_export.h"
 #include "animkit/io/point_cache.h"
 #include "intersection_audit.h"
-#include "temp_files.h"
 
 namespace animkit {
 namespace {
@@ -184,7 +184,8 @@ TEST(MovingObstacles, DISABLED_AKeyframedBoxLiftsAPinnedClothAndItsCacheReplaysI
   World w = make_world(desc, {collider(BoxShape{Vec3(0.1, 0.1, 0.1)}, keys, 1)});
 
   // colliders.pc2 as the CLI writes it: the term's collider points, frame by frame.
-  const auto path = testing_support::fresh_dir("moving_obstacles") / "colliders.pc2";
+  const std::filesystem::path path =
+      std::filesystem::path(::testing::TempDir()) / "animkit_moving_obstacles_colliders.pc2";
   auto writer = Pc2Writer::open(path, collider_point_count(w.contact->colliders()));
   ASSERT_TRUE(writer);
   ASSERT_TRUE(writer->add_frame(w.contact->collider_points()));
