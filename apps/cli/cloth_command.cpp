@@ -128,7 +128,7 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
   const auto describe_state = [&] {
     picture.clear();
     describe_cloth(picture, sim->model(), sim->state(), {.floor_height = floor_height});
-    describe_colliders(picture, *colliders, 0.0);
+    describe_colliders(picture, *colliders, sim->state().time);
   };
   if (pictures->take_video_frame()) {
     describe_state();
@@ -136,7 +136,7 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
       return report_error(ok.error().message);
   }
 
-  std::optional<Pc2Writer> cache;
+  std::optional<Pc2Writer> cache, collider_cache;
   if (!out.empty()) {
     if (auto ok = ensure_output_directory(out); !ok) return report_error(ok.error().message);
     auto opened = Pc2Writer::open(out / "cloth.pc2", sim->model().particle_count());
@@ -144,6 +144,15 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
     cache.emplace(std::move(*opened));
     if (auto ok = cache->add_frame(sim->state().positions); !ok)
       return report_error(ok.error().message);
+    // Moving colliders play back beside the cloth: their surfaces, frame by frame.
+    if (any_collider_moves(*colliders)) {
+      auto opened_colliders =
+          Pc2Writer::open(out / "colliders.pc2", collider_point_count(*colliders));
+      if (!opened_colliders) return report_error(opened_colliders.error().message);
+      collider_cache.emplace(std::move(*opened_colliders));
+      if (auto ok = collider_cache->add_frame(collider_points(*colliders, sim->state().time)); !ok)
+        return report_error(ok.error().message);
+    }
   }
 
   const ClothState rest = sim->state();  // for the OBJ: the mesh as it starts
@@ -153,6 +162,10 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
                                 const StepReport& step) -> Result<void> {
     if (cache) {
       if (auto ok = cache->add_frame(s.state().positions); !ok) return ok;
+    }
+    if (collider_cache) {
+      if (auto ok = collider_cache->add_frame(collider_points(*colliders, s.state().time)); !ok)
+        return ok;
     }
     if (pictures->take_video_frame()) {
       describe_state();
@@ -178,10 +191,13 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
         return report_error(ok.error().message);
       }
       if (auto ok = cache->finish(); !ok) return report_error(ok.error().message);
+      if (collider_cache) {
+        if (auto ok = collider_cache->finish(); !ok) return report_error(ok.error().message);
+      }
       if (auto ok = write_file_atomic(out / "cloth.obj", cloth_obj(sim->model(), rest)); !ok) {
         return report_error(ok.error().message);
       }
-      // The colliders as Blender opens them beside the cloth (they do not move here).
+      // The colliders as Blender opens them beside the cloth, in their first frame's pose.
       if (!colliders->empty()) {
         if (auto ok = write_file_atomic(out / "colliders.obj", colliders_obj(*colliders, 0.0)); !ok)
           return report_error(ok.error().message);

@@ -125,6 +125,7 @@ Result<void> ClothSimulator::set_state(const ClothState& state) {
   if (!all_finite(state.positions) || !all_finite(state.velocities)) {
     return fail("state has a non-finite position or velocity");
   }
+  if (!std::isfinite(state.time)) return fail("state has a non-finite time");
   impl_->state = state;
   for (int i = 0; i < impl_->model->particle_count(); ++i) {
     if (impl_->model->pinned[i]) impl_->state.velocities.segment<3>(3 * i).setZero();
@@ -142,7 +143,12 @@ Result<StepReport> ClothSimulator::step(double dt) {
   s.backup.velocities = s.state.velocities;
   const double h = dt / report.substeps;
   const Eigen::VectorXd* external = s.external_forces ? &*s.external_forces : nullptr;
-  for (int k = 0; k < report.substeps; ++k) s.integrator->step(s.state, h, report, external);
+  const double start_time = s.state.time;
+  s.backup.time = start_time;
+  for (int k = 0; k < report.substeps; ++k) {
+    s.integrator->step(s.state, h, report, external);
+    s.state.time = start_time + (k + 1) * h;  // not summed: no drift over many substeps
+  }
   std::optional<std::string> problem = divergence(s.state);
   if (!problem &&
       !(std::isfinite(report.gradient_norm_start) && std::isfinite(report.gradient_norm_end))) {
@@ -153,6 +159,7 @@ Result<StepReport> ClothSimulator::step(double dt) {
   if (problem) {
     s.state.positions = s.backup.positions;
     s.state.velocities = s.backup.velocities;
+    s.state.time = s.backup.time;
     return fail("the simulation diverged in step " + std::to_string(s.steps + 1) + " (" +
                 std::string(integrator_entry(s.options.integrator).name) + ", " +
                 std::to_string(report.substeps) + " substep(s) of " + format_number(h) +

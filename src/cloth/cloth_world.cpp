@@ -85,8 +85,7 @@ Result<std::shared_ptr<ContactTerm>> make_contact(const ClothWorldDesc& desc,
         return fail("particle " + std::to_string(i) + " starts on or below the ground");
     }
   }
-  for (const Collider& c : colliders)
-    obstacles.meshes.push_back({c.world_vertices(), c.model().surface.triangles});
+  obstacles.colliders = colliders;  // moved by the contact term along their motions
   return ContactTerm::create(std::make_shared<const ClothModel>(sim.model()), desc.contact,
                              std::move(obstacles));
 }

@@ -121,11 +121,22 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
   double gradient_norm = start_norm;
   const GradientStop stop =
       begin_implicit_substep(potential_, start_norm, options_.tolerance, report);
-  bool converged = stop.reached(gradient_norm);
+  // Converged: |grad g| small and every term at the substep's end (a moving collider at its
+  // pose at t + h: until then g is not yet the end's potential).
+  bool converged = stop.reached(gradient_norm) && potential_.terms_settled();
   ++report.friction_iterations;
   for (int k = 0; std::isfinite(gradient_norm) && k < options_.max_iterations; ++k) {
+    // Converged: a term that lagged quantities may refresh them and go on (friction's passes).
     if (converged && !next_lagging_pass(stop, gradient_norm, report)) break;
     converged = false;
+    if (stop.reached(gradient_norm)) {
+      // x minimizes g with the terms where they are, but a term is short of the end: it moves
+      // on from x (arrive_at_iterate updates the terms), then Newton resumes from there.
+      gradient_norm = arrive_at_iterate(report);
+      ++report.newton_iterations;
+      converged = stop.reached(gradient_norm) && potential_.terms_settled();
+      continue;
+    }
     IterationRecord record;
     // g itself is needed only for the record: the line search works with differences.
     if (options_.record_iterations) record.objective = potential_.value(x_);
@@ -138,7 +149,7 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
     if (!decrease) break;  // no decrease found: keep x (reported as not converged)
     gradient_norm = accept_step(report);
     ++report.newton_iterations;
-    converged = stop.reached(gradient_norm);
+    converged = stop.reached(gradient_norm) && potential_.terms_settled();
 
     record.gradient_norm = gradient_norm;
     record.ms = ms_since(substep_start);
@@ -275,11 +286,12 @@ double ImplicitEuler::accept_step(StepReport& report) {
   return arrive_at_iterate(report);
 }
 
-// At a new iterate x: the terms see it (e.g. gather contact pairs), then grad g there; returns
-// |grad g|.
+// At a new iterate x: the terms move their world on (a collider, pushing x along), then see x
+// (e.g. gather contact pairs), then grad g there; returns |grad g|.
 double ImplicitEuler::arrive_at_iterate(StepReport& report) {
   auto t = StageClock::now();
   if (potential_.has_terms()) {
+    potential_.advance_terms(x_);
     potential_.update_terms(x_);
     report.ms_term_updates += ms_since(t);
     t = StageClock::now();

@@ -74,6 +74,10 @@ void IncrementalPotential::prepare(const ClothState& state, double h,
   for (const auto& term : terms_) term->prepare(state, h);
 }
 
+void IncrementalPotential::advance_terms(Eigen::VectorXd& x) {
+  for (const auto& term : terms_) term->advance(x);
+}
+
 void IncrementalPotential::update_terms(const Eigen::VectorXd& x) {
   for (const auto& term : terms_) term->update(x);
 }
@@ -82,6 +86,11 @@ bool IncrementalPotential::relag_terms(const Eigen::VectorXd& x) {
   bool changed = false;
   for (const auto& term : terms_) changed = term->relag(x) || changed;  // every term, always
   return changed;
+}
+
+bool IncrementalPotential::terms_settled() const {
+  return std::all_of(terms_.begin(), terms_.end(),
+                     [](const auto& term) { return term->settled(); });
 }
 
 double IncrementalPotential::max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) {

@@ -124,6 +124,23 @@ std::optional<Error> validate_motion(const ColliderMotion& motion) {
   return std::visit([](const auto& m) { return validate(m); }, motion);
 }
 
+std::optional<Error> validate_pose(const RigidPose& pose) {
+  if (auto e = check_vector(pose.position, "position")) return e;
+  return check_rotation(pose.rotation, "rotation");
+}
+
+bool moves(const ColliderMotion& motion) {
+  if (const auto* scripted = std::get_if<ScriptedMotion>(&motion))
+    return !scripted->linear_velocity.isZero(0.0) || !scripted->angular_velocity.isZero(0.0);
+  const auto& keys = std::get<KeyframedMotion>(motion).keyframes;
+  for (std::size_t i = 1; i < keys.size(); ++i) {
+    const Eigen::Vector4d q = keys[i].rotation.coeffs(), q0 = keys[0].rotation.coeffs();
+    // q and -q are the same rotation.
+    if (keys[i].position != keys[0].position || (q != q0 && q != -q0)) return true;
+  }
+  return false;
+}
+
 RigidPose pose_at(const ColliderMotion& motion, double t) {
   return std::visit([t](const auto& m) { return pose_of(m, t); }, motion);
 }

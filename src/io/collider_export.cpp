@@ -1,5 +1,6 @@
 #include "animkit/io/collider_export.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace animkit {
@@ -28,6 +29,11 @@ int collider_point_count(const std::vector<Collider>& colliders) {
   std::size_t count = 0;
   for (const Collider& c : colliders) count += c.model().surface.vertices.size();
   return static_cast<int>(count);
+}
+
+bool any_collider_moves(const std::vector<Collider>& colliders) {
+  return std::any_of(colliders.begin(), colliders.end(),
+                     [](const Collider& c) { return moves(c.model().desc.motion); });
 }
 
 Eigen::VectorXd collider_points(const std::vector<Collider>& colliders, double t) {

@@ -29,17 +29,17 @@ ClothWorldDesc lab() {
 // A 1 m sheet falls onto a ball resting on the ground: it wraps the ball, its sides reach the
 // ground and its corners fold onto the sheet.
 ClothWorldDesc drape_sphere() {
-  ClothWorldDesc world = cotton_sheet_world(40, 1.0, 0.6);
+  ClothWorldDesc world = cotton_sheet_world(20, 1.0, 0.6);
   world.colliders.push_back(sphere("ball", 0.25, Vec3(0.0, 0.25, 0.0), 0.3));
   world.ground = GroundDesc{.height = 0.0, .friction = 0.3};
-  world.frames = 90;
+  world.frames = 60;
   return world;
 }
 
 // A 1.2 m cloth settles on a 0.8 m square table 0.7 m high: the top holds it by friction,
 // the overhang falls and its corners hang in folds.
 ClothWorldDesc tablecloth() {
-  ClothWorldDesc world = cotton_sheet_world(40, 1.2, 0.75);
+  ClothWorldDesc world = cotton_sheet_world(24, 1.2, 0.75);
   ColliderDesc table;
   table.name = "table";
   table.shape = BoxShape{Vec3(0.4, 0.35, 0.4)};
@@ -47,14 +47,14 @@ ClothWorldDesc tablecloth() {
   table.friction = 0.5;
   world.colliders.push_back(table);
   world.ground = GroundDesc{.height = 0.0, .friction = 0.5};
-  world.frames = 90;
+  world.frames = 60;
   return world;
 }
 
 // A 1 m flag on a vertical pole (its edge i = 0 pinned) in a gusting wind along +x; the
 // ground far below only turns contact on, so the flag cannot pass through itself.
 ClothWorldDesc flag() {
-  ClothWorldDesc world = cotton_sheet_world(30, 1.0, 1.6);
+  ClothWorldDesc world = cotton_sheet_world(20, 1.0, 1.6);
   auto& grid = std::get<GridClothOptions>(world.cloth);
   grid.pins = GridPins::edge;
   // Turned upright about the sheet's centre: the pinned edge (along z) becomes vertical.
@@ -65,31 +65,31 @@ ClothWorldDesc flag() {
   air.wind.velocity = Vec3(4.0, 0.0, 0.0);
   air.wind.gust = Vec3(4.0, 0.0, 1.0);
   world.air = air;
-  world.frames = 120;
+  world.frames = 75;
   return world;
 }
 
 // A ball turning about the vertical at 2 rad/s under a draped sheet drags it round by friction.
 ClothWorldDesc spinning_sphere() {
-  ClothWorldDesc world = cotton_sheet_world(30, 1.0, 0.75);
+  ClothWorldDesc world = cotton_sheet_world(20, 1.0, 0.75);
   ColliderDesc ball = sphere("spinning ball", 0.3, Vec3(0.0, 0.4, 0.0), 0.8);
   std::get<ScriptedMotion>(ball.motion).angular_velocity = Vec3(0.0, 2.0, 0.0);
   world.colliders.push_back(ball);
   world.ground = GroundDesc{.height = 0.0, .friction = 0.3};
-  world.frames = 120;
+  world.frames = 75;
   return world;
 }
 
 // A sheet dropped edge-first from 0.2 m, nearly upright and a little askew, buckles as it
 // lands and piles up on the ground in folds that rest on each other.
 ClothWorldDesc fold() {
-  ClothWorldDesc world = cotton_sheet_world(30, 0.8, 0.0);
+  ClothWorldDesc world = cotton_sheet_world(20, 0.8, 0.0);
   auto& grid = std::get<GridClothOptions>(world.cloth);
   grid.rotation = Quat(Eigen::AngleAxisd(10.0 * kDegree, Vec3::UnitZ())) *
                   Quat(Eigen::AngleAxisd(75.0 * kDegree, Vec3::UnitX()));
   grid.offset = Vec3(0.0, 0.6, 0.0);
   world.ground = GroundDesc{.height = 0.0, .friction = 0.5};
-  world.frames = 120;
+  world.frames = 75;
   return world;
 }
 

@@ -94,6 +94,10 @@ struct ClothModel {
 struct ClothState {
   Eigen::VectorXd positions;
   Eigen::VectorXd velocities;
+  /// The simulated time this state is at, s (default 0: where a scene starts; any finite
+  /// value). ClothSimulator advances it by every substep's h; energy terms whose world moves
+  /// with time (colliders on a path, gusts) read it in EnergyTerm::prepare as the substep's start.
+  double time = 0.0;
 
   Vec3 position(int i) const { return positions.segment<3>(3 * i); }
   Vec3 velocity(int i) const { return velocities.segment<3>(3 * i); }

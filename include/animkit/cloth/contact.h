@@ -6,8 +6,10 @@
 // distance d (collision/barrier.h), which grows without bound as the pair closes. Newton's
 // line search never steps past what continuous collision detection allows (max_step), every
 // iterate is intersection-free, so every step is: the barrier is what pushes, CCD is what
-// guarantees. Obstacles are fixed triangle meshes (colliders' surfaces at the step's end) and
-// an optional ground plane y = height; self-contact covers the cloth's own triangles.
+// guarantees. Obstacles are fixed triangle meshes, colliders that move on their paths (each
+// substep takes their surfaces from their poses at t to their poses at t + h between Newton's
+// iterates, as far as CCD allows each time: src/cloth/contact/moving_obstacles.h) and an
+// optional ground plane y = height; self-contact covers the cloth's own triangles.
 //
 // Why IPC and not Offset Geometric Contact (Chen et al. 2025): OGC bounds each vertex's
 // displacement inside VBD-style local solves, and on this project's stiff cloth VBD does not
@@ -19,6 +21,7 @@
 
 #include "animkit/cloth/cloth_model.h"
 #include "animkit/cloth/energy_term.h"
+#include "animkit/collision/collider.h"
 #include "animkit/core/result.h"
 #include "animkit/core/triangle_mesh.h"
 
@@ -41,12 +44,18 @@ struct ContactSettings {
   std::optional<Error> validate() const;
 };
 
-/// The world the cloth meets, fixed during a step.
+/// The world the cloth meets.
 struct ContactObstacles {
-  std::vector<TriangleMesh> meshes;     ///< colliders' surfaces, world space
-  std::optional<double> ground_height;  ///< the plane y = height, the cloth above it
+  std::vector<TriangleMesh> meshes = {};  ///< fixed surfaces, world space, m; default none
+  /// The plane y = height (m), the cloth above it; default none.
+  std::optional<double> ground_height = std::nullopt;
+  /// Colliders on their motions (planes excepted: give a horizontal floor as ground_height),
+  /// each starting where it is placed (Collider::time()); default none. Each substep moves them
+  /// to their poses at the substep's end (ClothState::time + h).
+  std::vector<Collider> colliders = {};
 
-  /// Every vertex of every mesh, in order (the indices of the meshes' primitives follow).
+  /// Every vertex of every mesh, then of every collider's surface, in order (the indices of
+  /// the primitives follow).
   int vertex_count() const;
 };
 
@@ -67,6 +76,7 @@ class ContactTerm final : public EnergyTerm {
 
   std::string_view name() const override { return "contact"; }
   void prepare(const ClothState& state, double h) override;
+  void advance(Eigen::VectorXd& x) override;
   void update(const Eigen::VectorXd& x) override;
   double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) override;
   void add_to_report(const Eigen::VectorXd& x, StepReport& report) const override;
@@ -75,6 +85,28 @@ class ContactTerm final : public EnergyTerm {
   void add_gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const override;
   void add_hessian(const Eigen::VectorXd& x, bool projected,
                    std::vector<HessianBlock>& blocks) const override;
+
+  /// False while a collider is short of its pose at the substep's end (CCD held it back).
+  bool settled() const override;
+
+  /// Drives collider `index` (of ContactObstacles::colliders, in order) by hand from now on
+  /// (e.g. the viewer's mouse): the next substep moves it from where it is to `target` (world
+  /// space) with the same guarantee, and it stays there, its motion no longer followed, until
+  /// the next target. Errors: no such collider, a non-finite position, a rotation that is not
+  /// a unit quaternion.
+  Result<void> move_collider(std::size_t index, const RigidPose& target);
+  /// The colliders, in order (their shapes, names and motions; poses: collider_pose()).
+  const std::vector<Collider>& colliders() const;
+  /// The pose collider `index` last reached (its pose at the end of the last settled substep).
+  const RigidPose& collider_pose(std::size_t index) const;
+  /// Every collider's surface vertices where they are now, world, m: x, y, z each, in
+  /// colliders_obj()'s vertex order (io/collider_export.h): a colliders.pc2 frame.
+  Eigen::VectorXd collider_points() const;
+  /// Every obstacle vertex (ContactObstacles::vertex_count() of them) where it is now, and
+  /// where it was at the substep's start, world, m, 3 each: their difference is how far the
+  /// obstacles moved in the substep so far (what friction slides against).
+  const Eigen::VectorXd& obstacle_positions() const;
+  const Eigen::VectorXd& obstacle_start_positions() const;
 
   /// The barrier stiffness in use (J/m^4).
   double stiffness() const;

@@ -25,9 +25,15 @@ class EnergyTerm {
 
   /// Names the term in messages ("floor contact").
   virtual std::string_view name() const = 0;
-  /// Called at the start of every substep, from x_n over h, before any evaluation (e.g. to
-  /// gather contact pairs or freeze an axis).
+  /// Called at the start of every substep, from x_n (at time state.time) over h, before any
+  /// evaluation (e.g. to gather contact pairs, freeze an axis, or aim a collider at its pose
+  /// at state.time + h).
   virtual void prepare(const ClothState& /*state*/, double /*h*/) {}
+  /// Called at every new iterate x of the minimization, before update(): a term whose world
+  /// moves toward the substep's end (a collider) moves it there as far as it can, and may
+  /// move x along with it (the cloth a collider pushes), keeping x admissible (by continuous
+  /// collision detection) and pinned particles where they are. Default: nothing moves.
+  virtual void advance(Eigen::VectorXd& /*x*/) {}
   /// Called at every new iterate x of the minimization (the starting point, then each
   /// accepted step) before g's gradient and Hessian are taken there: e.g. to gather the contact
   /// pairs close to x.
@@ -37,6 +43,12 @@ class EnergyTerm {
   /// return true; the minimization then goes on from x with the changed g. False: nothing
   /// changed (the default), the substep ends.
   virtual bool relag(const Eigen::VectorXd& /*x*/) { return false; }
+  /// Whether the term has reached the substep's end (e.g. every moving collider at its pose
+  /// at t + h). A term whose own parameters move toward the end as the minimization goes
+  /// (update() advancing a collider only as far as CCD allows) says false until they are
+  /// there: the solver does not report convergence before every term is settled, and keeps
+  /// calling update() at its iterate. Default: always settled.
+  virtual bool settled() const { return true; }
   /// The largest fraction t in (0, 1] of `step` such that every point x + s step, s in [0, t],
   /// is admissible for this term (e.g. intersection-free, by conservative continuous collision
   /// detection); the line search never tries a longer step. Called once per iteration before

@@ -42,6 +42,9 @@ class IncrementalPotential {
   /// they enter y as h^2 M^-1 f (e.g. the viewer's mouse spring, evaluated at x_n).
   void prepare(const ClothState& state, double h, const Eigen::VectorXd* external_forces = nullptr);
 
+  /// Lets every term move its world toward the substep's end, and x with it
+  /// (EnergyTerm::advance).
+  void advance_terms(Eigen::VectorXd& x);
   /// Tells every term that the minimization reached x (see EnergyTerm::update).
   void update_terms(const Eigen::VectorXd& x);
   /// Lets every term re-lag at a converged x (EnergyTerm::relag); true if any changed g.
@@ -49,6 +52,8 @@ class IncrementalPotential {
   /// The largest fraction in (0, 1] of `step` every term admits from x (EnergyTerm::max_step);
   /// 1 without terms.
   double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step);
+  /// Whether every term has reached the substep's end (EnergyTerm::settled).
+  bool terms_settled() const;
   /// Whether any term may bound the step (then the minimization starts from an admissible point
   /// between x_n and y instead of from y itself).
   bool has_terms() const { return !terms_.empty(); }

@@ -23,7 +23,7 @@ struct RigidPose {
 /// exp(w t) q0 (turning about the world axis w / |w| by |w| t, about the collider's own moving
 /// origin). All zero velocities (the default) is a static collider.
 struct ScriptedMotion {
-  RigidPose initial;                     ///< the pose at t = 0
+  RigidPose initial = {};                ///< the pose at t = 0
   Vec3 linear_velocity = Vec3::Zero();   ///< world space, m/s, finite
   Vec3 angular_velocity = Vec3::Zero();  ///< world space, rad/s, finite
 };
@@ -47,6 +47,14 @@ using ColliderMotion = std::variant<ScriptedMotion, KeyframedMotion>;
 /// non-finite number, a rotation that is not a unit quaternion (|q| off 1 by more than 1e-6),
 /// no keyframes, keyframe times not strictly increasing. Nothing when the motion is usable.
 std::optional<Error> validate_motion(const ColliderMotion& motion);
+
+/// The first problem of a pose alone ("rotation is not a unit quaternion (norm 2)"): a
+/// non-finite position, a rotation that is not a unit quaternion (as validate_motion).
+std::optional<Error> validate_pose(const RigidPose& pose);
+
+/// Whether the motion ever changes the pose: a velocity that is not zero, or two keyframes
+/// with different poses. A collider whose motion does not move is static.
+bool moves(const ColliderMotion& motion);
 
 /// Where the collider's local frame is at time t (s, finite; any sign).
 RigidPose pose_at(const ColliderMotion& motion, double t);

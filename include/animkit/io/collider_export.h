@@ -17,6 +17,10 @@ std::string colliders_obj(const std::vector<Collider>& colliders, double t);
 /// How many points a colliders.pc2 frame has: every collider's surface vertices.
 int collider_point_count(const std::vector<Collider>& colliders);
 
+/// Whether any collider's motion moves it (collider_motion.h moves()): then colliders.pc2 is
+/// written next to colliders.obj.
+bool any_collider_moves(const std::vector<Collider>& colliders);
+
 /// One colliders.pc2 frame for Pc2Writer::add_frame: the world positions at time t (s) of
 /// every collider's surface vertices, x, y, z each, concatenated in colliders_obj's vertex
 /// order.

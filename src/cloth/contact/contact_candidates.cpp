@@ -44,6 +44,7 @@ Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
   g.obstacle_positions.resize(3 * static_cast<Eigen::Index>(vertices.size()));
   for (std::size_t i = 0; i < vertices.size(); ++i)
     g.obstacle_positions.segment<3>(3 * static_cast<Eigen::Index>(i)) = vertices[i];
+  g.obstacle_start_positions = g.obstacle_positions;
   for (const auto& [a, b] : g.obstacles.edges) {
     g.obstacle_rest_length2.push_back(
         (at(g.obstacle_positions, a) - at(g.obstacle_positions, b)).squaredNorm());
@@ -68,7 +69,8 @@ void set_cloth_rest_lengths(ContactGeometry& geometry, const Eigen::VectorXd& cl
 Result<void> ContactPairFinder::gather(const ContactGeometry& g, const Eigen::VectorXd& x,
                                        const Eigen::VectorXd* step, double radius,
                                        std::optional<double> ground,
-                                       std::vector<ContactPair>& pairs) {
+                                       std::vector<ContactPair>& pairs,
+                                       const Eigen::VectorXd* obstacle_end) {
   pairs.clear();
   if (step) {
     end_ = x + *step;  // sized once, reused
@@ -76,7 +78,8 @@ Result<void> ContactPairFinder::gather(const ContactGeometry& g, const Eigen::Ve
     end_ = x;
   }
   const MeshMotion cloth{g.cloth, x, end_};
-  const MeshMotion obstacles{g.obstacles, g.obstacle_positions, g.obstacle_positions};
+  const MeshMotion obstacles{g.obstacles, g.obstacle_positions,
+                             obstacle_end ? *obstacle_end : g.obstacle_positions};
   const bool any_obstacle = !g.obstacles.triangles.empty();
   if (auto ok = broad_phase_.find(cloth, radius, candidates_, any_obstacle ? &obstacles : nullptr);
       !ok) {
@@ -124,10 +127,13 @@ Result<void> ContactPairFinder::gather(const ContactGeometry& g, const Eigen::Ve
 
 double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>& pairs,
                         const Eigen::VectorXd& x, const Eigen::VectorXd& step, double ground,
-                        double min_separation) {
+                        double min_separation, const Eigen::VectorXd* obstacle_step) {
   const int n = g.cloth_vertices();
   const auto start_of = [&](int v) { return v < n ? at(x, v) : at(g.obstacle_positions, v - n); };
-  const auto move_of = [&](int v) { return v < n ? at(step, v) : Vec3(Vec3::Zero()); };
+  const auto move_of = [&](int v) {
+    if (v < n) return at(step, v);
+    return obstacle_step ? at(*obstacle_step, v - n) : Vec3(Vec3::Zero());
+  };
   AdditiveCcdSettings settings;
   settings.separation_fraction = min_separation;
   double bound = 1.0;

@@ -17,20 +17,25 @@
 namespace animkit {
 
 struct ContactGeometry {
-  CollisionMesh cloth;                 ///< the cloth's triangles and edges
-  CollisionMesh obstacles;             ///< every obstacle mesh, concatenated
-  Eigen::VectorXd obstacle_positions;  ///< 3 per obstacle vertex, world, fixed during a step
+  CollisionMesh cloth;      ///< the cloth's triangles and edges
+  CollisionMesh obstacles;  ///< every obstacle mesh, concatenated
+  /// 3 per obstacle vertex, world, m: where the obstacles are now. Fixed during a line search;
+  /// moving colliders advance between iterates (moving_obstacles.h).
+  Eigen::VectorXd obstacle_positions;
+  /// Where the obstacles were at the substep's start (set by the contact term's prepare()).
+  Eigen::VectorXd obstacle_start_positions;
   std::vector<double> cloth_rest_length2, obstacle_rest_length2;  ///< per edge, squared
   std::vector<int> obstacle_mesh_start;  ///< per obstacle mesh, its first vertex's index
   bool self_contact = true;
 
   int cloth_vertices() const { return cloth.vertex_count; }
-  /// The obstacles' vertices at the substep's start (3 per vertex, world); obstacle_positions
-  /// are where they are now. Equal while obstacles are static; friction measures sliding
-  /// against the obstacles' own displacement, the difference of the two.
-  const Eigen::VectorXd& obstacle_start_positions() const { return obstacle_positions; }
   /// The obstacle mesh (index into ContactObstacles::meshes) that obstacle vertex v belongs to.
   int obstacle_mesh_of(int v) const;
+  /// How far obstacle vertex v (0-based among the obstacles' vertices) has moved since the
+  /// substep's start, world, m: what friction measures the cloth's sliding against.
+  Vec3 obstacle_displacement(int v) const {
+    return obstacle_positions.segment<3>(3 * v) - obstacle_start_positions.segment<3>(3 * v);
+  }
 };
 
 /// The primitives of the cloth (its triangles and their edges) and of the obstacles.
@@ -45,11 +50,14 @@ class ContactPairFinder {
  public:
   /// Every pair (point-triangle, edge-edge, particle-ground) that is, or on x + t step for
   /// t in [0, 1] may come, within `radius` (m), into `pairs` (in a fixed order). step ==
-  /// nullptr: at x only. Pairs sharing a vertex and pairs of two obstacle primitives are never
-  /// listed; cloth-cloth pairs only with self-contact.
+  /// nullptr: at x only. `obstacle_end` (3 per obstacle vertex) moves the obstacles linearly
+  /// from their positions to it over the same t; nullptr: they stay. Pairs sharing a vertex
+  /// and pairs of two obstacle primitives are never listed; cloth-cloth pairs only with
+  /// self-contact.
   Result<void> gather(const ContactGeometry& geometry, const Eigen::VectorXd& x,
                       const Eigen::VectorXd* step, double radius, std::optional<double> ground,
-                      std::vector<ContactPair>& pairs);
+                      std::vector<ContactPair>& pairs,
+                      const Eigen::VectorXd* obstacle_end = nullptr);
 
  private:
   BroadPhase broad_phase_;
@@ -59,9 +67,10 @@ class ContactPairFinder {
 
 /// The largest t in (0, 1] such that no pair of `pairs` gets closer than `min_separation` of
 /// its distance at x anywhere on x + s step, s in [0, t] (conservative: Additive CCD, and the
-/// exact bound for the ground; obstacles fixed).
+/// exact bound for the ground). The obstacles move by s obstacle_step (3 per obstacle vertex)
+/// at the same time, or stay with nullptr.
 double earliest_contact(const ContactGeometry& geometry, const std::vector<ContactPair>& pairs,
                         const Eigen::VectorXd& x, const Eigen::VectorXd& step, double ground,
-                        double min_separation);
+                        double min_separation, const Eigen::VectorXd* obstacle_step = nullptr);
 
 }  // namespace animkit

@@ -5,9 +5,11 @@
 #include <string>
 
 #include "animkit/cloth/contact.h"
+#include "animkit/core/quote.h"
 #include "animkit/core/validation.h"
 #include "contact_candidates.h"
 #include "contact_pair.h"
+#include "moving_obstacles.h"
 
 namespace animkit {
 
@@ -35,6 +37,7 @@ std::optional<Error> ContactSettings::validate() const {
 int ContactObstacles::vertex_count() const {
   int n = 0;
   for (const TriangleMesh& mesh : meshes) n += static_cast<int>(mesh.vertices.size());
+  for (const Collider& c : colliders) n += static_cast<int>(c.model().surface.vertices.size());
   return n;
 }
 
@@ -46,6 +49,8 @@ struct ContactTerm::Impl {
   std::optional<double> ground;
   ContactGeometry geometry;  // the cloth's and the obstacles' primitives, one index space
   ContactPairFinder finder;
+  MovingObstacles moving;
+  int first_collider_vertex = 0;   // colliders' vertices follow the fixed meshes'
   std::vector<ContactPair> pairs;  // what value, gradient and Hessian sum over
   mutable Eigen::VectorXd moved;   // difference()'s workspace
   bool rest_lengths_known = false;
@@ -87,11 +92,28 @@ Result<std::shared_ptr<ContactTerm>> ContactTerm::create(std::shared_ptr<const C
   }
   if (obstacles.ground_height && !std::isfinite(*obstacles.ground_height))
     return fail("the ground's height must be finite");
+  for (const Collider& c : obstacles.colliders) {
+    if (c.is_half_space()) {
+      return fail("collider " + quote_input(c.name()) +
+                  " is a plane: contact takes a horizontal floor as the ground height");
+    }
+  }
   auto impl = std::make_unique<Impl>();
   impl->settings = settings;
   impl->barrier = *LogBarrier::create(settings.thickness * settings.thickness);
   impl->ground = obstacles.ground_height;
-  auto geometry = build_contact_geometry(*model, obstacles.meshes, settings.self_contact);
+  // One obstacle list: the fixed meshes, then each collider's surface where it is now.
+  std::vector<TriangleMesh> surfaces = std::move(obstacles.meshes);
+  int first = 0;
+  for (const TriangleMesh& mesh : surfaces) first += static_cast<int>(mesh.vertices.size());
+  impl->first_collider_vertex = first;
+  for (Collider& c : obstacles.colliders) {
+    surfaces.push_back({c.world_vertices(), c.model().surface.triangles});
+    const int count = static_cast<int>(c.model().surface.vertices.size());
+    impl->moving.add(std::move(c), first);
+    first += count;
+  }
+  auto geometry = build_contact_geometry(*model, surfaces, settings.self_contact);
   if (!geometry) return fail(geometry.error().message);
   impl->geometry = std::move(*geometry);
   double mass = 0.0;
@@ -114,12 +136,60 @@ double ContactTerm::stiffness() const {
   return impl_->kappa;
 }
 
-void ContactTerm::prepare(const ClothState& state, double /*h*/) {
+Result<void> ContactTerm::move_collider(std::size_t index, const RigidPose& target) {
+  const auto& colliders = impl_->moving.colliders();
+  if (index >= colliders.size()) {
+    return fail("no collider " + std::to_string(index) + ": the contact term has " +
+                std::to_string(colliders.size()) + " collider(s)");
+  }
+  if (auto error = validate_pose(target)) {
+    return fail("collider " + quote_input(colliders[index].name()) +
+                ": target pose: " + error->message);
+  }
+  impl_->moving.set_target(index, target);
+  return {};
+}
+
+const std::vector<Collider>& ContactTerm::colliders() const {
+  return impl_->moving.colliders();
+}
+
+const RigidPose& ContactTerm::collider_pose(std::size_t index) const {
+  return impl_->moving.pose(index);
+}
+
+Eigen::VectorXd ContactTerm::collider_points() const {
+  const Eigen::VectorXd& all = impl_->geometry.obstacle_positions;
+  const Eigen::Index first = 3 * static_cast<Eigen::Index>(impl_->first_collider_vertex);
+  return all.tail(all.size() - first);
+}
+
+const Eigen::VectorXd& ContactTerm::obstacle_positions() const {
+  return impl_->geometry.obstacle_positions;
+}
+
+const Eigen::VectorXd& ContactTerm::obstacle_start_positions() const {
+  return impl_->geometry.obstacle_start_positions;
+}
+
+void ContactTerm::prepare(const ClothState& state, double h) {
   // The edge-edge mollifier's thresholds come from rest lengths: the cloth's as it starts.
   if (!impl_->rest_lengths_known) {
     set_cloth_rest_lengths(impl_->geometry, state.positions);
     impl_->rest_lengths_known = true;
   }
+  impl_->moving.begin_substep(impl_->geometry, state.time + h);
+}
+
+bool ContactTerm::settled() const {
+  return impl_->moving.settled();
+}
+
+void ContactTerm::advance(Eigen::VectorXd& x) {
+  // Moving colliders advance toward the substep's end, pushing the cloth in their way, as far
+  // as CCD allows (moving_obstacles.h), then stay there for this iteration's line search.
+  impl_->moving.advance(impl_->geometry, impl_->finder, impl_->model->pinned, impl_->ground,
+                        impl_->settings.thickness, impl_->settings.min_separation, x, impl_->pairs);
 }
 
 void ContactTerm::update(const Eigen::VectorXd& x) {

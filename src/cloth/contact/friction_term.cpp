@@ -98,7 +98,7 @@ struct FrictionTerm::Impl {
         const int v = lagged->vertices[i];
         if (v < n) continue;
         lagged->obstacle_motion += lagged->weights[i] * (at(g.obstacle_positions, v - n) -
-                                                         at(g.obstacle_start_positions(), v - n));
+                                                         at(g.obstacle_start_positions, v - n));
       }
       pairs.push_back(*lagged);
     }
@@ -131,7 +131,7 @@ void FrictionTerm::prepare(const ClothState& state, double h) {
   impl_->x_start = state.positions;
   impl_->eps_u = impl_->settings.smoothing_velocity * h;
   impl_->passes = 1;
-  if (!impl_->lag(state.positions, impl_->geometry().obstacle_start_positions()))
+  if (!impl_->lag(state.positions, impl_->geometry().obstacle_start_positions))
     impl_->pairs.clear();
 }
 

@@ -1,0 +1,124 @@
+#include "moving_obstacles.h"
+
+#include <array>
+#include <utility>
+
+namespace animkit {
+
+void MovingObstacles::add(Collider collider, int first_vertex) {
+  poses_.push_back(collider.pose());
+  aims_.push_back(collider.pose());
+  colliders_.push_back(std::move(collider));
+  first_vertex_.push_back(first_vertex);
+  targets_.emplace_back();
+}
+
+void MovingObstacles::begin_substep(ContactGeometry& g, double t_end) {
+  g.obstacle_start_positions = g.obstacle_positions;  // same size: no allocation after the first
+  end_ = g.obstacle_positions;                        // fixed meshes end where they are
+  for (std::size_t c = 0; c < colliders_.size(); ++c) {
+    aims_[c] = targets_[c] ? *targets_[c] : pose_at(colliders_[c].model().desc.motion, t_end);
+    const auto& local = colliders_[c].model().surface.vertices;
+    for (std::size_t i = 0; i < local.size(); ++i) {
+      end_.segment<3>(3 * (first_vertex_[c] + static_cast<Eigen::Index>(i))) =
+          aims_[c].to_world(local[i]);
+    }
+  }
+  settled_ = end_ == g.obstacle_positions;
+  if (settled_) poses_ = aims_;
+}
+
+namespace {
+
+// The barycentric coordinates (b, c) of e's projection onto the plane of (0, u, v), unit
+// normal `normal`, twice the area `twice_area`; inside the triangle when b, c >= 0, b + c <= 1.
+std::array<double, 2> projected_barycentric(const Vec3& e, const Vec3& u, const Vec3& v,
+                                            const Vec3& normal, double twice_area) {
+  return {normal.dot(e.cross(v)) / twice_area, normal.dot(u.cross(e)) / twice_area};
+}
+
+bool inside(const std::array<double, 2>& w) {
+  return w[0] >= 0.0 && w[1] >= 0.0 && w[0] + w[1] <= 1.0;
+}
+
+}  // namespace
+
+// Two cases, each a point over a face: a particle over an obstacle face, and an obstacle vertex
+// under a cloth triangle (a coarse cloth meets a finer collider through its triangles'
+// insides). The normal and the gap are taken where everything is now; the face's or the
+// vertex's move along the normal, less the gap beyond half the contact distance, is what the
+// cloth lacks. A particle pushed several ways takes the largest push.
+void MovingObstacles::push_cloth(const ContactGeometry& g, const std::vector<char>& pinned,
+                                 const Eigen::VectorXd& x, double radius,
+                                 const std::vector<ContactPair>& pairs) {
+  const int n = g.cloth_vertices();
+  push_.setZero(x.size());
+  pushed_.assign(static_cast<std::size_t>(n), 0.0);
+  const auto position = [&](int v) -> Vec3 {
+    return v < n ? Vec3(x.segment<3>(3 * v)) : Vec3(g.obstacle_positions.segment<3>(3 * (v - n)));
+  };
+  const auto moving = [&](int v) -> Vec3 { return move_.segment<3>(3 * (v - n)); };
+  const auto push = [&](int p, double lack, const Vec3& normal) {
+    if (pinned[static_cast<std::size_t>(p)] || !(lack > pushed_[static_cast<std::size_t>(p)]))
+      return;
+    pushed_[static_cast<std::size_t>(p)] = lack;
+    push_.segment<3>(3 * p) = lack * normal;
+  };
+  for (const ContactPair& pair : pairs) {
+    if (pair.kind != ContactKind::point_triangle) continue;
+    const int p = pair.vertices[0];
+    const bool cloth_point = p < n;
+    if (cloth_point == (pair.vertices[1] < n)) continue;  // cloth-cloth (obstacle-obstacle: none)
+    const Vec3 a = position(pair.vertices[1]);
+    const Vec3 u = position(pair.vertices[2]) - a, v = position(pair.vertices[3]) - a;
+    Vec3 normal = u.cross(v);
+    const double twice_area = normal.norm();
+    if (!(twice_area > 0.0)) continue;
+    normal /= twice_area;
+    const Vec3 e = position(p) - a;
+    double gap = e.dot(normal);
+    if (gap < 0.0) {
+      normal = -normal;
+      gap = -gap;
+    }
+    const std::array<double, 2> w =
+        projected_barycentric(e - gap * normal, u, v, normal, twice_area);
+    if (!inside(w)) continue;
+    if (cloth_point) {
+      // The obstacle face comes toward p along `normal` (pointing from the face to p).
+      const Vec3 face_move = (1.0 - w[0] - w[1]) * moving(pair.vertices[1]) +
+                             w[0] * moving(pair.vertices[2]) + w[1] * moving(pair.vertices[3]);
+      push(p, face_move.dot(normal) - (gap - 0.5 * radius), normal);
+    } else {
+      // The obstacle vertex comes toward the cloth triangle along -normal: push it whole.
+      const double lack = -moving(p).dot(normal) - (gap - 0.5 * radius);
+      for (int i = 1; i < 4; ++i) push(pair.vertices[i], lack, -normal);
+    }
+  }
+}
+
+void MovingObstacles::advance(ContactGeometry& g, ContactPairFinder& finder,
+                              const std::vector<char>& pinned, std::optional<double> ground,
+                              double radius, double min_separation, Eigen::VectorXd& x,
+                              std::vector<ContactPair>& pairs) {
+  if (settled_) return;
+  move_ = end_ - g.obstacle_positions;
+  // The faces the obstacles' move sweeps close to the cloth, and what they push.
+  if (!finder.gather(g, x, nullptr, radius, std::nullopt, pairs, &end_)) return;  // not finite
+  push_cloth(g, pinned, x, radius, pairs);
+  // Every pair the joint move may bring within `radius`, then its longest safe fraction.
+  if (!finder.gather(g, x, &push_, radius, ground, pairs, &end_)) return;
+  const double fraction =
+      earliest_contact(g, pairs, x, push_, ground.value_or(0.0), min_separation, &move_);
+  if (fraction >= 1.0) {
+    g.obstacle_positions = end_;  // exactly: the end pose's vertices, no rounding left over
+    x += push_;
+    poses_ = aims_;
+    settled_ = true;
+  } else if (fraction > 0.0) {
+    g.obstacle_positions += fraction * move_;
+    x += fraction * push_;
+  }
+}
+
+}  // namespace animkit
