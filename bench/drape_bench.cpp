@@ -1,0 +1,206 @@
+// Issue 11's drape benchmark: drape-sphere (drape_scene.h) with self-contact, a cotton sheet
+// falling onto a ball on the ground, run by animkit at 41 x 41 and 101 x 101 particles and by
+// Bullet's soft body (bullet_drape.h) at 41 x 41, in the same program.
+//
+// One benchmark iteration is a whole run from the flat sheet: building the world is not timed,
+// nor is the audit after each frame. Counters:
+//   ms_step       median over the run's frames of one frame's wall time (animkit: the step's
+//                 own report; Bullet: its stepSimulation), ms_max their largest;
+//   newton, cg    animkit's Newton and PCG iterations per step (mean);
+//   converged     fraction of animkit's steps that reached 1e-4 relative gradient;
+//   bad_frames    frames where the cloth intersects itself or the ball's tessellation (the
+//                 mesh animkit's contact sees) by the exact CGAL audit
+//                 (tests/support/intersection_audit.h), or has a vertex on or below the ground;
+//                 self_frames, ball_frames, ground_frames count each kind;
+//   strain_mean, strain_max  relative stretch of the axis edges at the last frame, %.
+// The 101 x 101 run is bounded (kFrames101) so one repetition stays within minutes.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+#include "animkit/cloth/cloth_world.h"
+#include "animkit/cloth/grid_cloth.h"
+#include "bullet_drape.h"
+#include "drape_scene.h"
+#include "intersection_audit.h"
+#include "ratio_reporter.h"
+
+namespace {
+
+using animkit::TriangleMesh;
+using animkit::Vec3;
+
+/// Frames of the 101 x 101 run: the fall, the impact and the first folds on the ground (the
+/// whole scene is 90).
+constexpr int kFrames101 = 45;
+
+struct Audit {
+  int self = 0, ball = 0, ground = 0, bad = 0;
+
+  void frame(const TriangleMesh& cloth, const TriangleMesh& ball_surface, double ground_height) {
+    const bool crosses_self = animkit::testing::count_self_intersections(cloth) > 0;
+    const bool meets_ball = animkit::testing::meshes_intersect(cloth, ball_surface);
+    const bool under_ground = std::any_of(cloth.vertices.begin(), cloth.vertices.end(),
+                                          [&](const Vec3& v) { return v.y() <= ground_height; });
+    self += crosses_self;
+    ball += meets_ball;
+    ground += under_ground;
+    bad += crosses_self || meets_ball || under_ground;
+  }
+
+  void report(benchmark::State& state) const {
+    state.counters["bad_frames"] = bad;
+    state.counters["self_frames"] = self;
+    state.counters["ball_frames"] = ball;
+    state.counters["ground_frames"] = ground;
+  }
+};
+
+void report_times(benchmark::State& state, std::vector<double> ms) {
+  std::sort(ms.begin(), ms.end());
+  state.counters["ms_step"] = ms[ms.size() / 2];
+  state.counters["ms_max"] = ms.back();
+  state.counters["frames"] = static_cast<double>(ms.size());
+}
+
+// Relative stretch of the grid's axis edges, mean and largest.
+std::array<double, 2> grid_axis_strain(const std::vector<Vec3>& x, int cells, double spacing) {
+  double sum = 0.0, largest = 0.0;
+  int count = 0;
+  for (int i = 0; i <= cells; ++i) {
+    for (int j = 0; j <= cells; ++j) {
+      const int p = animkit::grid_index(cells, i, j);
+      for (const int q : {i < cells ? animkit::grid_index(cells, i + 1, j) : -1,
+                          j < cells ? animkit::grid_index(cells, i, j + 1) : -1}) {
+        if (q < 0) continue;
+        const double strain = (x[p] - x[q]).norm() / spacing - 1.0;
+        sum += strain;
+        largest = std::max(largest, strain);
+        ++count;
+      }
+    }
+  }
+  return {sum / count, largest};
+}
+
+void report_strain(benchmark::State& state, std::array<double, 2> strain) {
+  state.counters["strain_mean"] = 100.0 * strain[0];
+  state.counters["strain_max"] = 100.0 * strain[1];
+}
+
+void animkit_drape(benchmark::State& state, int particles, int frames) {
+  const animkit::ClothWorldDesc desc = animkit::bench::drape_world(particles, frames);
+  const auto& grid = std::get<animkit::GridClothOptions>(desc.cloth);
+  for (auto _ : state) {
+    state.PauseTiming();
+    auto world = animkit::build_cloth_world(desc);
+    if (!world) {
+      state.SkipWithError(world.error().message.c_str());
+      return;
+    }
+    animkit::ClothSimulator& sim = world->simulator;
+    const animkit::Collider& ball = world->colliders.front();
+    const TriangleMesh ball_surface{ball.world_vertices(), ball.model().surface.triangles};
+    TriangleMesh cloth{{}, sim.model().triangles};
+    std::vector<double> ms;
+    double newton = 0, cg = 0, converged = 0;
+    Audit audit;
+    state.ResumeTiming();
+    for (int frame = 1; frame <= desc.frames; ++frame) {
+      const auto report = sim.step(desc.time_step);
+      state.PauseTiming();
+      if (!report) {
+        state.SkipWithError(report.error().message.c_str());
+        return;
+      }
+      ms.push_back(report->ms);
+      newton += report->newton_iterations;
+      cg += report->linear_iterations;
+      converged += report->converged ? 1 : 0;
+      cloth.vertices.resize(sim.model().particle_count());
+      for (int i = 0; i < sim.model().particle_count(); ++i)
+        cloth.vertices[i] = sim.state().position(i);
+      audit.frame(cloth, ball_surface, desc.ground->height);
+      state.ResumeTiming();
+    }
+    state.PauseTiming();
+    const double steps = static_cast<double>(ms.size());
+    report_times(state, ms);
+    state.counters["newton"] = newton / steps;
+    state.counters["cg"] = cg / steps;
+    state.counters["converged"] = converged / steps;
+    audit.report(state);
+    report_strain(state, grid_axis_strain(cloth.vertices, grid.cells, grid.size / grid.cells));
+    state.ResumeTiming();
+  }
+}
+
+void bullet_drape(benchmark::State& state, int particles, int frames) {
+  const animkit::ClothWorldDesc desc = animkit::bench::drape_world(particles, frames);
+  const animkit::bench::DrapeParts parts = animkit::bench::drape_parts(desc);
+  animkit::bench::BulletDrapeSettings settings;
+  settings.margin = desc.contact.thickness;
+  for (auto _ : state) {
+    state.PauseTiming();
+    // The animkit world gives the ball's tessellation and the sheet's corners.
+    auto world = animkit::build_cloth_world(desc);
+    if (!world) {
+      state.SkipWithError(world.error().message.c_str());
+      return;
+    }
+    const animkit::Collider& ball = world->colliders.front();
+    const TriangleMesh ball_surface{ball.world_vertices(), ball.model().surface.triangles};
+    const int n = parts.sheet.cells;
+    const animkit::ClothState& start = world->simulator.state();
+    const std::array<Vec3, 4> corners{
+        start.position(animkit::grid_index(n, 0, 0)), start.position(animkit::grid_index(n, n, 0)),
+        start.position(animkit::grid_index(n, 0, n)), start.position(animkit::grid_index(n, n, n))};
+    animkit::bench::BulletDrape bullet(parts, corners, settings);
+    TriangleMesh cloth{{}, bullet.triangles()};
+    std::vector<double> ms;
+    Audit audit;
+    state.ResumeTiming();
+    for (int frame = 1; frame <= desc.frames; ++frame) {
+      const auto t0 = std::chrono::steady_clock::now();
+      bullet.step(desc.time_step);
+      const auto t1 = std::chrono::steady_clock::now();
+      state.PauseTiming();
+      ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+      bullet.positions(cloth.vertices);
+      audit.frame(cloth, ball_surface, desc.ground->height);
+      state.ResumeTiming();
+    }
+    state.PauseTiming();
+    report_times(state, ms);
+    audit.report(state);
+    report_strain(state, bullet.axis_strain());
+    state.ResumeTiming();
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  const int whole = animkit::bench::drape_world(41, 1'000'000).frames;
+  benchmark::RegisterBenchmark("drape/animkit/41x41",
+                               [whole](benchmark::State& s) { animkit_drape(s, 41, whole); })
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("drape/bullet/41x41",
+                               [whole](benchmark::State& s) { bullet_drape(s, 41, whole); })
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("drape/animkit/101x101",
+                               [](benchmark::State& s) { animkit_drape(s, 101, kFrames101); })
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
+  animkit::bench::RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  reporter.print_ratio("drape/bullet/41x41", "drape/animkit/41x41", "ms_step",
+                       "Bullet / animkit, median ms per step, drape 41x41");
+  benchmark::Shutdown();
+  return 0;
+}
