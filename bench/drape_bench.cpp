@@ -6,18 +6,24 @@
 // nor is the audit after each frame. Counters:
 //   ms_step       median over the run's frames of one frame's wall time (animkit: the step's
 //                 own report; Bullet: its stepSimulation), ms_max their largest;
+//   cpu_ms_step   the same median in the process's CPU time (both threads), steadier than
+//                 wall time when other programs share the cores;
 //   newton, cg    animkit's Newton and PCG iterations per step (mean);
 //   converged     fraction of animkit's steps that reached 1e-4 relative gradient;
 //   bad_frames    frames where the cloth intersects itself or the ball's tessellation (the
 //                 mesh animkit's contact sees) by the exact CGAL audit
 //                 (tests/support/intersection_audit.h), or has a vertex on or below the ground;
 //                 self_frames, ball_frames, ground_frames count each kind;
+//   ball_depth_mm, ground_depth_mm  the deepest any vertex went inside the true sphere or
+//                 below the ground over the run (0 when none did);
 //   strain_mean, strain_max  relative stretch of the axis edges at the last frame, %.
 // The 101 x 101 run is bounded (kFrames101) so one repetition stays within minutes.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <ctime>
 #include <vector>
 
 #include "animkit/cloth/cloth_world.h"
@@ -36,10 +42,25 @@ using animkit::Vec3;
 /// and the impact, the costliest steps; the whole run takes too long for one repetition.
 constexpr int kFrames101 = 10;
 
+// The process's CPU time, ms: on a loaded machine a step's wall time counts other programs'
+// turns too (all threads of the process are summed, OpenMP's spinning included).
+double cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+}
+
 struct Audit {
   int self = 0, ball = 0, ground = 0, bad = 0;
+  double ball_depth = 0.0, ground_depth = 0.0;  // deepest vertex inside the true sphere, ground
 
-  void frame(const TriangleMesh& cloth, const TriangleMesh& ball_surface, double ground_height) {
+  void frame(const TriangleMesh& cloth, const TriangleMesh& ball_surface,
+             const animkit::bench::DrapeParts& parts) {
+    const double ground_height = parts.ground_height;
+    for (const Vec3& v : cloth.vertices) {
+      ball_depth = std::max(ball_depth, parts.ball_radius - (v - parts.ball_centre).norm());
+      ground_depth = std::max(ground_depth, ground_height - v.y());
+    }
     const bool crosses_self = animkit::testing::count_self_intersections(cloth) > 0;
     const bool meets_ball = animkit::testing::meshes_intersect(cloth, ball_surface);
     const bool under_ground = std::any_of(cloth.vertices.begin(), cloth.vertices.end(),
@@ -55,13 +76,17 @@ struct Audit {
     state.counters["self_frames"] = self;
     state.counters["ball_frames"] = ball;
     state.counters["ground_frames"] = ground;
+    state.counters["ball_depth_mm"] = 1e3 * ball_depth;
+    state.counters["ground_depth_mm"] = 1e3 * ground_depth;
   }
 };
 
-void report_times(benchmark::State& state, std::vector<double> ms) {
+void report_times(benchmark::State& state, std::vector<double> ms, std::vector<double> cpu) {
   std::sort(ms.begin(), ms.end());
+  std::sort(cpu.begin(), cpu.end());
   state.counters["ms_step"] = ms[ms.size() / 2];
   state.counters["ms_max"] = ms.back();
+  state.counters["cpu_ms_step"] = cpu[cpu.size() / 2];
   state.counters["frames"] = static_cast<double>(ms.size());
 }
 
@@ -93,6 +118,7 @@ void report_strain(benchmark::State& state, std::array<double, 2> strain) {
 void animkit_drape(benchmark::State& state, int particles, int frames) {
   const animkit::ClothWorldDesc desc = animkit::bench::drape_world(particles, frames);
   const auto& grid = std::get<animkit::GridClothOptions>(desc.cloth);
+  const animkit::bench::DrapeParts parts = animkit::bench::drape_parts(desc);
   for (auto _ : state) {
     state.PauseTiming();
     auto world = animkit::build_cloth_world(desc);
@@ -104,13 +130,16 @@ void animkit_drape(benchmark::State& state, int particles, int frames) {
     const animkit::Collider& ball = world->colliders.front();
     const TriangleMesh ball_surface{ball.world_vertices(), ball.model().surface.triangles};
     TriangleMesh cloth{{}, sim.model().triangles};
-    std::vector<double> ms;
+    std::vector<double> ms, cpu;
     double newton = 0, cg = 0, converged = 0;
     Audit audit;
     state.ResumeTiming();
     for (int frame = 1; frame <= desc.frames; ++frame) {
+      const double cpu0 = cpu_ms();
       const auto report = sim.step(desc.time_step);
+      const double cpu1 = cpu_ms();
       state.PauseTiming();
+      cpu.push_back(cpu1 - cpu0);
       if (!report) {
         state.SkipWithError(report.error().message.c_str());
         return;
@@ -122,12 +151,12 @@ void animkit_drape(benchmark::State& state, int particles, int frames) {
       cloth.vertices.resize(sim.model().particle_count());
       for (int i = 0; i < sim.model().particle_count(); ++i)
         cloth.vertices[i] = sim.state().position(i);
-      audit.frame(cloth, ball_surface, desc.ground->height);
+      audit.frame(cloth, ball_surface, parts);
       state.ResumeTiming();
     }
     state.PauseTiming();
     const double steps = static_cast<double>(ms.size());
-    report_times(state, ms);
+    report_times(state, ms, cpu);
     state.counters["newton"] = newton / steps;
     state.counters["cg"] = cg / steps;
     state.counters["converged"] = converged / steps;
@@ -160,21 +189,24 @@ void bullet_drape(benchmark::State& state, int particles, int frames, double mar
         start.position(animkit::grid_index(n, 0, n)), start.position(animkit::grid_index(n, n, n))};
     animkit::bench::BulletDrape bullet(parts, corners, settings);
     TriangleMesh cloth{{}, bullet.triangles()};
-    std::vector<double> ms;
+    std::vector<double> ms, cpu;
     Audit audit;
     state.ResumeTiming();
     for (int frame = 1; frame <= desc.frames; ++frame) {
+      const double cpu0 = cpu_ms();
       const auto t0 = std::chrono::steady_clock::now();
       bullet.step(desc.time_step);
       const auto t1 = std::chrono::steady_clock::now();
+      const double cpu1 = cpu_ms();
       state.PauseTiming();
       ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+      cpu.push_back(cpu1 - cpu0);
       bullet.positions(cloth.vertices);
-      audit.frame(cloth, ball_surface, desc.ground->height);
+      audit.frame(cloth, ball_surface, parts);
       state.ResumeTiming();
     }
     state.PauseTiming();
-    report_times(state, ms);
+    report_times(state, ms, cpu);
     audit.report(state);
     report_strain(state, bullet.axis_strain());
     state.ResumeTiming();
