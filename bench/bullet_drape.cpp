@@ -93,10 +93,11 @@ BulletDrape::BulletDrape(const DrapeParts& parts, const std::array<Vec3, 4>& cor
   cloth.m_cfg.piterations = settings.position_iterations;
   cloth.m_cfg.kDP = cotton.damping;
   cloth.m_cfg.kDF = 1.0;
-  cloth.m_cfg.collisions = btSoftBody::fCollision::SDF_RS | btSoftBody::fCollision::CL_SS |
-                           btSoftBody::fCollision::CL_SELF;
+  cloth.m_cfg.collisions = btSoftBody::fCollision::SDF_RS;
+  if (settings.self_collision)
+    cloth.m_cfg.collisions |= btSoftBody::fCollision::CL_SS | btSoftBody::fCollision::CL_SELF;
   cloth.setTotalMass(cotton.density * sheet.size * sheet.size, true);
-  cloth.generateClusters(0);  // after the flags: it fills the self-collision connectivity
+  if (settings.self_collision) cloth.generateClusters(0);  // one cluster per triangle
   cloth.updateConstants();
   m.world.addSoftBody(m.cloth);
 

@@ -34,6 +34,7 @@ struct BulletDrapeSettings {
   int position_iterations = 10;  ///< Bullet's piterations, link passes per substep, >= 1
   int substeps = 2;              ///< fixed Bullet steps per frame (1/60 s at 1/30 s frames)
   double margin = 2e-3;          ///< collision margin, m (animkit's contact thickness)
+  bool self_collision = true;    ///< clusters against each other (CL_SS | CL_SELF)
 };
 
 class BulletDrape {

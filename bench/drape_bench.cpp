@@ -167,11 +167,13 @@ void animkit_drape(benchmark::State& state, int particles, int frames) {
 }
 
 // `margin`: Bullet's collision margin, m; 0 for animkit's contact thickness.
-void bullet_drape(benchmark::State& state, int particles, int frames, double margin) {
+void bullet_drape(benchmark::State& state, int particles, int frames, double margin,
+                  bool self_collision = true) {
   const animkit::ClothWorldDesc desc = animkit::bench::drape_world(particles, frames);
   const animkit::bench::DrapeParts parts = animkit::bench::drape_parts(desc);
   animkit::bench::BulletDrapeSettings settings;
   settings.margin = margin > 0.0 ? margin : desc.contact.thickness;
+  settings.self_collision = self_collision;
   for (auto _ : state) {
     state.PauseTiming();
     // The animkit world gives the ball's tessellation and the sheet's corners.
@@ -230,6 +232,12 @@ int main(int argc, char** argv) {
   // wider margin keeps its nodes further from the surfaces it resolves in velocity.
   benchmark::RegisterBenchmark("drape/bullet/41x41/margin_1cm",
                                [whole](benchmark::State& s) { bullet_drape(s, 41, whole, 0.01); })
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
+  // Without self-collision: what Bullet's clusters cost and what they do to the contacts.
+  benchmark::RegisterBenchmark(
+      "drape/bullet/41x41/no_self_collision",
+      [whole](benchmark::State& s) { bullet_drape(s, 41, whole, 0.0, false); })
       ->Iterations(1)
       ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("drape/animkit/101x101",
