@@ -17,12 +17,15 @@
 //   ball_depth_mm, ground_depth_mm  the deepest any vertex went inside the true sphere or
 //                 below the ground over the run (0 when none did);
 //   strain_mean, strain_max  relative stretch of the axis edges at the last frame, %.
-// The 101 x 101 run is bounded (kFrames101) so one repetition stays within minutes.
+// Each frame also prints one line on stderr (a long run still tells where it is and what its
+// steps took if it is stopped). The 101 x 101 run is bounded (kFrames101) so one repetition stays
+// within minutes.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <vector>
 
@@ -152,6 +155,12 @@ void animkit_drape(benchmark::State& state, int particles, int frames) {
       for (int i = 0; i < sim.model().particle_count(); ++i)
         cloth.vertices[i] = sim.state().position(i);
       audit.frame(cloth, ball_surface, parts);
+      std::fprintf(stderr,
+                   "animkit %dx%d frame %d/%d: %.1f ms (cpu %.1f), %d Newton, %d CG, %s, "
+                   "%d bad frames so far\n",
+                   particles, particles, frame, desc.frames, report->ms, cpu.back(),
+                   report->newton_iterations, report->linear_iterations,
+                   report->converged ? "converged" : "NOT converged", audit.bad);
       state.ResumeTiming();
     }
     state.PauseTiming();
