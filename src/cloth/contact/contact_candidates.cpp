@@ -45,6 +45,7 @@ Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
   for (std::size_t i = 0; i < vertices.size(); ++i)
     g.obstacle_positions.segment<3>(3 * static_cast<Eigen::Index>(i)) = vertices[i];
   g.obstacle_start_positions = g.obstacle_positions;
+  g.obstacle_motion.setZero(g.obstacle_positions.size());
   for (const auto& [a, b] : g.obstacles.edges) {
     g.obstacle_rest_length2.push_back(
         (at(g.obstacle_positions, a) - at(g.obstacle_positions, b)).squaredNorm());

@@ -24,6 +24,11 @@ struct ContactGeometry {
   Eigen::VectorXd obstacle_positions;
   /// Where the obstacles were at the substep's start (set by the contact term's prepare()).
   Eigen::VectorXd obstacle_start_positions;
+  /// How far the collider's material point at each obstacle vertex moves over the substep
+  /// (3 per vertex, world, m): the surface's own move from start to end, plus the spin a
+  /// sphere turning about its centre keeps out of its surface (see MovingObstacles). What
+  /// friction measures the cloth's sliding against; zero for fixed meshes.
+  Eigen::VectorXd obstacle_motion;
   std::vector<double> cloth_rest_length2, obstacle_rest_length2;  ///< per edge, squared
   std::vector<int> obstacle_mesh_start;  ///< per obstacle mesh, its first vertex's index
   bool self_contact = true;
@@ -31,11 +36,6 @@ struct ContactGeometry {
   int cloth_vertices() const { return cloth.vertex_count; }
   /// The obstacle mesh (index into ContactObstacles::meshes) that obstacle vertex v belongs to.
   int obstacle_mesh_of(int v) const;
-  /// How far obstacle vertex v (0-based among the obstacles' vertices) has moved since the
-  /// substep's start, world, m: what friction measures the cloth's sliding against.
-  Vec3 obstacle_displacement(int v) const {
-    return obstacle_positions.segment<3>(3 * v) - obstacle_start_positions.segment<3>(3 * v);
-  }
 };
 
 /// The primitives of the cloth (its triangles and their edges) and of the obstacles.

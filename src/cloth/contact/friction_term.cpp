@@ -93,12 +93,11 @@ struct FrictionTerm::Impl {
       }
       auto lagged = lag_friction_pair(pair, p, ground, kappa, barrier, mu_of(pair));
       if (!lagged) continue;
-      // The obstacle's own motion over the substep (zero while obstacles are static).
+      // The obstacle's own motion over the substep (zero for fixed meshes).
       for (int i = 0; i < lagged->count; ++i) {
         const int v = lagged->vertices[i];
         if (v < n) continue;
-        lagged->obstacle_motion += lagged->weights[i] * (at(g.obstacle_positions, v - n) -
-                                                         at(g.obstacle_start_positions, v - n));
+        lagged->obstacle_motion += lagged->weights[i] * at(g.obstacle_motion, v - n);
       }
       pairs.push_back(*lagged);
     }

@@ -1,11 +1,19 @@
 #include "moving_obstacles.h"
 
 #include <array>
+#include <optional>
 #include <utility>
+#include <variant>
 
 namespace animkit {
 
 void MovingObstacles::add(Collider collider, int first_vertex) {
+  // A sphere turning about its centre covers the same ground: its surface for contact keeps
+  // its first orientation (so its tessellation does not sweep into cloth resting on it), and
+  // friction still feels the spin (begin_substep).
+  const bool round = std::holds_alternative<SphereShape>(collider.model().desc.shape);
+  surface_rotation_.push_back(round ? std::optional<Quat>(collider.pose().rotation)
+                                    : std::nullopt);
   poses_.push_back(collider.pose());
   aims_.push_back(collider.pose());
   colliders_.push_back(std::move(collider));
@@ -18,10 +26,15 @@ void MovingObstacles::begin_substep(ContactGeometry& g, double t_end) {
   end_ = g.obstacle_positions;                        // fixed meshes end where they are
   for (std::size_t c = 0; c < colliders_.size(); ++c) {
     aims_[c] = targets_[c] ? *targets_[c] : pose_at(colliders_[c].model().desc.motion, t_end);
+    RigidPose surface = aims_[c];
+    if (surface_rotation_[c]) surface.rotation = *surface_rotation_[c];
     const auto& local = colliders_[c].model().surface.vertices;
     for (std::size_t i = 0; i < local.size(); ++i) {
-      end_.segment<3>(3 * (first_vertex_[c] + static_cast<Eigen::Index>(i))) =
-          aims_[c].to_world(local[i]);
+      const Eigen::Index at = 3 * (first_vertex_[c] + static_cast<Eigen::Index>(i));
+      end_.segment<3>(at) = surface.to_world(local[i]);
+      // The material point at the vertex: carried by the whole motion, spin included.
+      const Vec3 start = g.obstacle_start_positions.segment<3>(at);
+      g.obstacle_motion.segment<3>(at) = aims_[c].to_world(poses_[c].to_local(start)) - start;
     }
   }
   settled_ = end_ == g.obstacle_positions;
