@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "animkit/collision/distance_type.h"
+
 namespace animkit {
 
 namespace {
@@ -19,6 +21,17 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
   // Ericson 5.1.5: test p against the Voronoi regions of a, b, c, then of the edges, by the
   // signs of dot products (d1..d6) and of the barycentric numerators (va, vb, vc).
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  if (ab.cross(ac).squaredNorm() <= kParallelTolerance * ab.squaredNorm() * ac.squaredNorm()) {
+    // Degenerate (its sides parallel): the regions' signs are rounding noise; its edges hold
+    // all its points.
+    const Vec3 candidates[3] = {closest_point_on_segment(p, a, b),
+                                closest_point_on_segment(p, b, c),
+                                closest_point_on_segment(p, c, a)};
+    return *std::min_element(std::begin(candidates), std::end(candidates),
+                             [&](const Vec3& u, const Vec3& v) {
+                               return (u - p).squaredNorm() < (v - p).squaredNorm();
+                             });
+  }
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
   if (d1 <= 0.0 && d2 <= 0.0) return a;
   const Vec3 bp = p - b;
@@ -34,16 +47,7 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
   const double va = d3 * d6 - d5 * d4;
   if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
     return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
-  const double sum = va + vb + vc;  // twice the area squared, zero only when degenerate
-  if (sum <= 0.0) {
-    const Vec3 candidates[3] = {closest_point_on_segment(p, a, b),
-                                closest_point_on_segment(p, b, c),
-                                closest_point_on_segment(p, c, a)};
-    return *std::min_element(std::begin(candidates), std::end(candidates),
-                             [&](const Vec3& u, const Vec3& v) {
-                               return (u - p).squaredNorm() < (v - p).squaredNorm();
-                             });
-  }
+  const double sum = va + vb + vc;  // |ab x ac|^2 > 0: not degenerate
   return a + (vb / sum) * ab + (vc / sum) * ac;
 }
 

@@ -10,7 +10,8 @@
 namespace animkit {
 
 /// The point of triangle (a, b, c) nearest p (by Voronoi regions of its vertices, edges and
-/// face). A degenerate triangle gives the nearest point of its longest edge.
+/// face). A degenerate triangle (sides parallel within kParallelTolerance) gives the nearest
+/// point of its edges.
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 /// The points of segments (a0, a1) and (b0, b1) nearest each other: [on a, on b]. Parallel
