@@ -217,7 +217,8 @@ void ClothScene::grab_collider(const ColliderGrab& grab) {
 
 Result<void> ClothScene::drag_collider_to(const Vec3& cursor) {
   if (!collider_drag_) return fail("no collider is grabbed");
-  if (!is_finite(cursor)) return fail("drag target has a non-finite coordinate " + to_string(cursor));
+  if (!is_finite(cursor))
+    return fail("drag target has a non-finite coordinate " + to_string(cursor));
   collider_drag_->cursor = cursor;
   collider_drag_->target = dragged_pose(collider_drag_->grab, cursor);
   return move_collider(collider_drag_->grab.collider, collider_drag_->target);

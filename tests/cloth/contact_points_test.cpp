@@ -100,7 +100,7 @@ TEST(ContactPoints, ASheetOnTheGroundAndABallListsEveryActivePairWhereItTouches)
     } else {
       ASSERT_EQ(p.with, ContactPoint::With::collider);  // a flat sheet does not touch itself
       ++collider;
-      EXPECT_GT(p.other.y(), p.cloth.y());              // the ball's side
+      EXPECT_GT(p.other.y(), p.cloth.y());  // the ball's side
       EXPECT_NEAR((p.other - Vec3(0.0, 0.0517, 0.0)).norm(), 0.05, 1e-3);
     }
   }

@@ -270,7 +270,8 @@ TEST(ClothScene, ThePressGrabsTheBallOrTheClothWhicheverIsInFront) {
   const ClothState& state = scene.simulator().state();
   for (int p = 0; p < scene.simulator().model().particle_count(); ++p) {
     const Vec3 x = state.position(p), best = state.position(near_edge);
-    if (x.z() > best.z() + 1e-9 || (x.z() > best.z() - 1e-9 && std::abs(x.x()) < std::abs(best.x())))
+    if (x.z() > best.z() + 1e-9 ||
+        (x.z() > best.z() - 1e-9 && std::abs(x.x()) < std::abs(best.x())))
       near_edge = p;
   }
   const Vec3 particle = state.position(near_edge);

@@ -9,7 +9,8 @@
 
 namespace animkit {
 
-/// What describe_cloth (and ClothScene::describe) draws. The lab shows the springs; the surface is what users expect.
+/// What describe_cloth (and ClothScene::describe) draws. The lab shows the springs; the surface is
+/// what users expect.
 struct ClothStyle {
   bool surface = true;        ///< lit, two-sided, smooth-shaded triangles
   bool springs = false;       ///< every spring as a line

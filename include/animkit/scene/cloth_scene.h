@@ -81,8 +81,8 @@ class ClothScene {
                           double height, double radius_px) const;
   /// What a press at pixel (x, y) grabs: that particle or the collider surface the pixel's
   /// ray meets first, whichever is nearer the eye.
-  ClothPick pick_handle(const OrbitCamera& camera, double x, double y, double width,
-                        double height, double radius_px) const;
+  ClothPick pick_handle(const OrbitCamera& camera, double x, double y, double width, double height,
+                        double radius_px) const;
   /// Starts or moves the mouse spring. Errors: index out of range, non-finite target.
   Result<void> set_drag(const ClothDrag& drag);
   void clear_drag();
