@@ -109,7 +109,7 @@ void ClothView::scene_menu() {
     ImGui::EndCombo();
   }
   if (const ClothSceneEntry* entry = find_cloth_scene(scene_.name()))
-    ImGui::TextDisabled("%s", entry->summary.data());
+    ImGui::TextWrapped("%s", entry->summary.data());
 }
 
 // The world's settings as controls: the lab's per-particle parameters for the lab's grid, the
@@ -201,7 +201,7 @@ void ClothView::readouts() {
                   1000.0 * step->min_contact_distance);
       ImGui::Text("CCD bound   %.3f of a step", step->step_bound_min);
     }
-    ImGui::Text("Energy      %.4g J", step->energy);
+    ImGui::Text("Energy      %.4g", step->energy);
   }
   energy_plot(scene_.energy_history(), 90.0f);
 }

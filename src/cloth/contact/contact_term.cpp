@@ -199,22 +199,6 @@ void ContactTerm::add_to_report(const Eigen::VectorXd& x, StepReport& report) co
   report.min_contact_distance = s.min_distance;
 }
 
-ContactStats ContactTerm::stats(const Eigen::VectorXd& x) const {
-  ContactStats stats;
-  stats.candidate_pairs = static_cast<int>(impl_->pairs.size());
-  double closest = impl_->barrier.dhat();
-  for (const ContactPair& pair : impl_->pairs) {
-    const double d =
-        contact_distance_squared(pair, impl_->positions(x, pair), impl_->ground_height());
-    if (d < impl_->barrier.dhat()) {
-      ++stats.active_pairs;
-      closest = std::min(closest, d);
-    }
-  }
-  stats.min_distance = std::sqrt(closest);
-  return stats;
-}
-
 void ContactTerm::contact_points(const Eigen::VectorXd& x, std::vector<ContactPoint>& out) const {
   out.clear();
   const int n = impl_->model->particle_count();
@@ -235,6 +219,22 @@ void ContactTerm::contact_points(const Eigen::VectorXd& x, std::vector<ContactPo
     }
     out.push_back(point);
   }
+}
+
+ContactStats ContactTerm::stats(const Eigen::VectorXd& x) const {
+  ContactStats stats;
+  stats.candidate_pairs = static_cast<int>(impl_->pairs.size());
+  double closest = impl_->barrier.dhat();
+  for (const ContactPair& pair : impl_->pairs) {
+    const double d =
+        contact_distance_squared(pair, impl_->positions(x, pair), impl_->ground_height());
+    if (d < impl_->barrier.dhat()) {
+      ++stats.active_pairs;
+      closest = std::min(closest, d);
+    }
+  }
+  stats.min_distance = std::sqrt(closest);
+  return stats;
 }
 
 }  // namespace animkit
