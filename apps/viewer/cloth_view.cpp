@@ -140,6 +140,12 @@ void ClothView::world_controls() {
     } else {
       ImGui::Text("Sheet       %s, from a mesh", material);
     }
+    const auto* grid = std::get_if<GridClothOptions>(&w.cloth);
+    const auto& m = grid ? grid->material : std::get<MeshClothOptions>(w.cloth).material;
+    if (m) {
+      ImGui::Text("Material    %.3g kg/m^2, stretch %.4g N/m", m->density, m->stretch);
+      ImGui::Text("            shear %.4g N/m, bending %.3g N m", m->shear, m->bending);
+    }
     ImGui::Text("Gravity     %.2f m/s^2", scene_.simulator().model().gravity);
   }
   float step_ms = static_cast<float>(1000.0 * w.time_step);
