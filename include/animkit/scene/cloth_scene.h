@@ -43,8 +43,8 @@ struct ClothDrag {
 /// A handle under the cursor: a particle (as ClothScene::pick) or a collider's surface,
 /// whichever is nearer the eye; both empty when there is nothing there.
 struct ClothPick {
-  std::optional<int> particle;
-  std::optional<ColliderGrab> collider;
+  std::optional<int> particle;           ///< the particle's index, when it is in front
+  std::optional<ColliderGrab> collider;  ///< the collider's surface, when it is in front
 };
 
 class ClothScene {
@@ -101,9 +101,9 @@ class ClothScene {
   void release_collider() { collider_drag_.reset(); }
   /// The grab and the pose last asked for, while a collider is dragged.
   struct ColliderDrag {
-    ColliderGrab grab;
-    Vec3 cursor = Vec3::Zero();
-    RigidPose target;
+    ColliderGrab grab;           ///< what the press grabbed
+    Vec3 cursor = Vec3::Zero();  ///< world space, m: where the grabbed point is asked to go
+    RigidPose target;            ///< the pose asked for last (dragged_pose(grab, cursor))
   };
   const std::optional<ColliderDrag>& collider_drag() const { return collider_drag_; }
 
