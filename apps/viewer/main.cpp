@@ -5,6 +5,9 @@
 #include <string>
 
 #include "animkit/cloth/integrator_registry.h"
+#include "animkit/core/quote.h"
+#include "animkit/io/cloth_scene_source.h"
+#include "animkit/scene/cloth_scenes.h"
 #include "drawing_args.h"
 #include "hosts.h"
 #include "size_arg.h"
@@ -27,7 +30,10 @@ int run(int argc, char** argv) {
   std::string size;
   int frames = 0;
   std::string capture;
-  app.add_option("--scene", scene, "Scene to open: ik or cloth")->capture_default_str();
+  app.add_option("--scene", scene,
+                 "Scene to open: ik, cloth (the lab's), a built-in cloth scene (" +
+                     cloth_scene_names() + ") or a cloth scene FILE.json")
+      ->capture_default_str();
   apps::DrawingArgs drawing;
   drawing.shape = "star";
   apps::add_drawing_options(app, drawing);
@@ -44,6 +50,8 @@ int run(int argc, char** argv) {
   app.add_flag("--paused", options.paused, "Start with the scene paused (Space starts it)");
   app.add_flag("--springs", options.cloth_style.springs, "Cloth: draw every spring");
   app.add_flag("--particles", options.cloth_style.particles, "Cloth: draw every particle");
+  app.add_flag("--contacts", options.cloth_style.contacts,
+               "Cloth: show the contact points (the closest points of every active pair)");
   app.add_option("--frames", frames,
                  "Frames to run before exiting (0: until the window is closed; --capture "
                  "needs at least 1)")
@@ -61,10 +69,30 @@ int run(int argc, char** argv) {
 
   if (scene == "ik") {
     options.scene = SceneKind::ik;
-  } else if (scene == "cloth") {
+  } else if (scene == "cloth" || scene == "lab") {
     options.scene = SceneKind::cloth;
   } else {
-    return report_error("unknown scene '" + scene + "' (expected ik or cloth)", 2);
+    // A cloth scene from the registry the CLI uses, or a scene file: it gives the whole world.
+    auto world = open_cloth_scene(scene);
+    if (!world) {
+      return report_error(scene.ends_with(".json") ? world.error().message
+                                                   : "unknown scene " + quote_input(scene) +
+                                                         " (expected ik, cloth, a .json file or "
+                                                         "one of: " +
+                                                         cloth_scene_names() + ")",
+                          2);
+    }
+    for (const char* lab_option :
+         {"--grid", "--integrator", "--mass", "--stiffness", "--damping", "--gravity", "--dt"}) {
+      if (app.count(lab_option) > 0) {
+        return report_error(std::string(lab_option) + " sets the lab's cloth; --scene " +
+                                quote_input(scene) +
+                                " gives the whole scene (change it in the side panel)",
+                            2);
+      }
+    }
+    options.scene = SceneKind::cloth;
+    options.cloth_world = NamedClothWorld{scene, std::move(*world)};
   }
   const auto ik_solver = parse_ik_solver(solver);
   if (!ik_solver)

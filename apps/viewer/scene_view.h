@@ -40,6 +40,8 @@ class SceneView {
   virtual Eigen::AlignedBox3d focus_bounds() const = 0;
   virtual double default_yaw() const = 0;
   virtual double default_pitch() const = 0;
+  /// True once after the scene changed to one the camera should frame afresh.
+  virtual bool take_new_view() { return false; }
 };
 
 }  // namespace animkit::viewer

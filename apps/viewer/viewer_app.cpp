@@ -18,7 +18,9 @@ ViewerApp::ViewerApp(Renderer renderer, IkView ik, ClothView cloth, SceneKind sc
 Result<ViewerApp> ViewerApp::create(const ViewerOptions& options) {
   auto ik = IkView::create(options.ik);
   if (!ik) return fail(ik.error().message);
-  auto cloth = ClothView::create(options.cloth);
+  auto cloth = options.cloth_world
+                   ? ClothView::create(options.cloth_world->world, options.cloth_world->name)
+                   : ClothView::create(options.cloth);
   if (!cloth) return fail(cloth.error().message);
   cloth->set_style(options.cloth_style);
   if (options.paused) {
@@ -110,6 +112,7 @@ void ViewerApp::side_panel() {
   ImGui::PushItemWidth(-130.0f);
   current().panel();
   ImGui::PopItemWidth();
+  if (current().take_new_view()) reset_camera();
   ImGui::Separator();
   if (ImGui::Button("Reset view")) reset_camera();
   ImGui::SameLine();

@@ -4,6 +4,7 @@
 // platform side; they call update() between ImGui::NewFrame() and ImGui::Render(), then
 // render() before drawing ImGui's draw data.
 #include <memory>
+#include <optional>
 
 #include "animkit/render/renderer.h"
 #include "cloth_view.h"
@@ -16,7 +17,9 @@ enum class SceneKind { ik, cloth };
 struct ViewerOptions {
   SceneKind scene = SceneKind::ik;
   IkViewOptions ik;
-  ClothSceneOptions cloth;
+  ClothSceneOptions cloth;  ///< the lab's cloth, unless cloth_world is given
+  /// A cloth scene to open instead (--scene NAME|FILE.json) and its name for the menu.
+  std::optional<NamedClothWorld> cloth_world;
   ClothStyle cloth_style;
   int width = 1280, height = 800;  ///< window or picture size in pixels
   bool paused = false;             ///< start with the scene paused

@@ -93,13 +93,18 @@ Result<std::shared_ptr<ContactTerm>> make_contact(const ClothWorldDesc& desc,
 }  // namespace
 
 Result<ClothWorld> build_cloth_world(const ClothWorldDesc& desc) {
-  if (auto error = desc.validate()) return fail(error->message);
+  if (auto error = desc.validate()) return fail(error->message);  // before the sheet's errors
   auto cloth = build_world_cloth(desc);
   if (!cloth) return fail(cloth.error().message);
+  return build_cloth_world(desc, *cloth);
+}
+
+Result<ClothWorld> build_cloth_world(const ClothWorldDesc& desc, const ClothDesc& cloth) {
+  if (auto error = desc.validate()) return fail(error->message);
   SimulationOptions options = desc.simulation;
   if (auto* newton = std::get_if<NewtonSettings>(&options.integrator); newton && desc.has_contact())
     newton->max_iterations = std::max(newton->max_iterations, kContactNewtonIterations);
-  auto sim = ClothSimulator::create(*cloth, options);
+  auto sim = ClothSimulator::create(cloth, options);
   if (!sim) return fail(sim.error().message);
 
   std::vector<Collider> colliders;

@@ -7,6 +7,8 @@
 
 #include "animkit/cloth/parameter_ranges.h"
 #include "animkit/core/validation.h"
+#include "animkit/scene/cloth_scenes.h"
+#include "animkit/scene/collider_drawing.h"
 
 namespace animkit {
 
@@ -23,71 +25,135 @@ std::optional<Error> ClothSceneOptions::validate() const {
   return std::nullopt;
 }
 
-ClothScene::ClothScene(ClothSceneOptions options, ClothDesc desc, ClothSimulator simulator)
-    : options_(std::move(options)), desc_(std::move(desc)), simulator_(std::move(simulator)) {}
+ClothWorldDesc ClothSceneOptions::world() const {
+  ClothWorldDesc world;
+  world.cloth = grid;
+  world.simulation = simulation;
+  world.time_step = time_step;
+  return world;
+}
+
+namespace {
+
+ClothSceneOptions lab_view(const ClothWorldDesc& world) {
+  ClothSceneOptions options;
+  if (const auto* grid = std::get_if<GridClothOptions>(&world.cloth)) options.grid = *grid;
+  options.simulation = world.simulation;
+  options.time_step = world.time_step;
+  return options;
+}
+
+// The same particles at the same rest positions, joined into the same triangles: a sheet
+// whose motion carries over.
+bool same_sheet(const ClothDesc& a, const ClothDesc& b) {
+  if (a.particles.size() != b.particles.size() || a.triangles != b.triangles) return false;
+  for (std::size_t i = 0; i < a.particles.size(); ++i) {
+    if (a.particles[i].position != b.particles[i].position) return false;
+  }
+  return true;
+}
+
+std::string out_of_range(const char* what, int index, int count) {
+  return std::string(what) + " " + std::to_string(index) + " is out of range (the cloth has " +
+         std::to_string(count) + ")";
+}
+
+}  // namespace
+
+ClothScene::ClothScene(ClothWorldDesc world, std::string name, ClothDesc desc, ClothWorld built)
+    : world_(std::move(world)),
+      name_(std::move(name)),
+      options_(lab_view(world_)),
+      desc_(std::move(desc)),
+      built_(std::move(built)) {
+  floor_height_ =
+      cloth_picture_frame(world_, desc_, built_.simulator.state(), built_.colliders).floor_height;
+}
 
 Result<ClothScene> ClothScene::create(const ClothSceneOptions& options) {
   if (auto error = options.validate()) return fail(error->message);
-  ClothDesc desc = make_grid_cloth(options.grid);
-  auto simulator = ClothSimulator::create(desc, options.simulation);
-  if (!simulator) return fail(simulator.error().message);
-  return ClothScene(options, std::move(desc), std::move(*simulator));
+  return create(options.world(), "lab");
 }
 
-Result<void> ClothScene::reset(const ClothSceneOptions& options) {
-  auto fresh = create(options);
+Result<ClothScene> ClothScene::create(const ClothWorldDesc& world, std::string name) {
+  if (auto error = world.validate()) return fail(error->message);
+  auto desc = build_world_cloth(world);
+  if (!desc) return fail(desc.error().message);
+  auto built = build_cloth_world(world, *desc);
+  if (!built) return fail(built.error().message);
+  return ClothScene(world, std::move(name), std::move(*desc), std::move(*built));
+}
+
+Result<void> ClothScene::load(const ClothWorldDesc& world, std::string name) {
+  auto fresh = create(world, std::move(name));
   if (!fresh) return fail(fresh.error().message);
   *this = std::move(*fresh);
   return {};
 }
 
-Result<void> ClothScene::rebuild_keeping_state(ClothDesc desc) {
-  auto simulator = ClothSimulator::create(desc, options_.simulation);
-  if (!simulator) return fail(simulator.error().message);
-  if (auto kept = simulator->set_state(simulator_.state()); !kept) return kept;
-  simulator_ = std::move(*simulator);
+Result<void> ClothScene::reset(const ClothSceneOptions& options) {
+  if (auto error = options.validate()) return fail(error->message);
+  return load(options.world(), "lab");
+}
+
+Result<void> ClothScene::restart() {
+  return load(world_, name_);
+}
+
+Result<void> ClothScene::rebuild_keeping_state(const ClothWorldDesc& world, ClothDesc desc) {
+  auto built = build_cloth_world(world, desc);
+  if (!built) return fail(built.error().message);
+  if (auto kept = built->simulator.set_state(simulator().state()); !kept) return kept;
+  // Colliders stand where they stood (they may have moved since the world began).
+  for (std::size_t i = 0; i < built->colliders.size(); ++i)
+    built->colliders[i].set_time(built_.colliders[i].time());
+  built_ = std::move(*built);
   desc_ = std::move(desc);
+  world_ = world;
+  options_ = lab_view(world_);
   return {};
 }
 
 Result<void> ClothScene::apply(const ClothSceneOptions& options) {
   if (auto error = options.validate()) return fail(error->message);
-  const bool same_layout = options.grid.cells == options_.grid.cells &&
-                           options.grid.size == options_.grid.size &&
-                           options.grid.height == options_.grid.height;
-  if (!same_layout) return reset(options);
-  // Same particles and springs: take the new physical parameters, keep pins and motion.
-  ClothDesc desc = make_grid_cloth(options.grid);
-  for (std::size_t i = 0; i < desc.particles.size(); ++i) {
-    desc.particles[i].pinned = desc_.particles[i].pinned;
-    desc.particles[i].position = desc_.particles[i].position;
-  }
-  const ClothSceneOptions previous = options_;
-  options_ = options;
-  if (auto rebuilt = rebuild_keeping_state(std::move(desc)); !rebuilt) {
-    options_ = previous;
-    return rebuilt;
-  }
-  return {};
+  ClothWorldDesc world = world_;
+  if (std::holds_alternative<GridClothOptions>(world.cloth)) world.cloth = options.grid;
+  world.simulation = options.simulation;
+  world.time_step = options.time_step;
+  return apply_world(world);
+}
+
+Result<void> ClothScene::apply_world(const ClothWorldDesc& world) {
+  if (auto error = world.validate()) return fail(error->message);
+  auto desc = build_world_cloth(world);
+  if (!desc) return fail(desc.error().message);
+  if (!same_sheet(*desc, desc_) || world.colliders.size() != world_.colliders.size())
+    return load(world, name_);
+  // The same particles and springs: take the new parameters, keep the pins and the motion.
+  for (std::size_t i = 0; i < desc->particles.size(); ++i)
+    desc->particles[i].pinned = desc_.particles[i].pinned;
+  return rebuild_keeping_state(world, std::move(*desc));
 }
 
 Result<void> ClothScene::toggle_pin(int particle) {
-  const int count = simulator_.model().particle_count();
-  if (particle < 0 || particle >= count) {
-    return fail("particle " + std::to_string(particle) + " is out of range (the cloth has " +
-                std::to_string(count) + ")");
-  }
+  const int count = simulator().model().particle_count();
+  if (particle < 0 || particle >= count) return fail(out_of_range("particle", particle, count));
   ClothDesc desc = desc_;
   desc.particles[particle].pinned = !desc.particles[particle].pinned;
-  return rebuild_keeping_state(std::move(desc));
+  return rebuild_keeping_state(world_, std::move(desc));
+}
+
+bool ClothScene::lab_parameters() const {
+  const auto* grid = std::get_if<GridClothOptions>(&world_.cloth);
+  return grid && !grid->material;
 }
 
 std::optional<int> ClothScene::pick(const OrbitCamera& camera, double x, double y, double width,
                                     double height, double radius_px) const {
   std::optional<int> best;
   double best_depth = std::numeric_limits<double>::infinity();
-  const ClothState& state = simulator_.state();
-  for (int i = 0; i < simulator_.model().particle_count(); ++i) {
+  const ClothState& state = simulator().state();
+  for (int i = 0; i < simulator().model().particle_count(); ++i) {
     const auto p = camera.project(state.position(i), width, height);
     if (!p || std::hypot(p->x() - x, p->y() - y) > radius_px) continue;
     if (p->z() < best_depth) {
@@ -98,12 +164,24 @@ std::optional<int> ClothScene::pick(const OrbitCamera& camera, double x, double 
   return best;
 }
 
+ClothPick ClothScene::pick_handle(const OrbitCamera& camera, double x, double y, double width,
+                                  double height, double radius_px) const {
+  const std::optional<int> particle = pick(camera, x, y, width, height, radius_px);
+  const Ray ray = camera.ray_through_pixel(x, y, width, height);
+  const std::optional<ColliderGrab> collider = pick_collider(colliders(), ray);
+  if (!collider) return {particle, std::nullopt};
+  if (!particle) return {std::nullopt, collider};
+  // Both: the one nearer the eye is the one the user sees (cloth draped over a ball is in
+  // front of it; a ball in front of the cloth hides it).
+  const double particle_distance = (simulator().state().position(*particle) - ray.origin).norm();
+  if (particle_distance <= collider->distance) return {particle, std::nullopt};
+  return {std::nullopt, collider};
+}
+
 Result<void> ClothScene::set_drag(const ClothDrag& drag) {
-  const int count = simulator_.model().particle_count();
-  if (drag.particle < 0 || drag.particle >= count) {
-    return fail("particle " + std::to_string(drag.particle) + " is out of range (the cloth has " +
-                std::to_string(count) + ")");
-  }
+  const int count = simulator().model().particle_count();
+  if (drag.particle < 0 || drag.particle >= count)
+    return fail(out_of_range("particle", drag.particle, count));
   if (!is_finite(drag.target)) {
     return fail("drag target has a non-finite coordinate " + to_string(drag.target));
   }
@@ -113,26 +191,62 @@ Result<void> ClothScene::set_drag(const ClothDrag& drag) {
 
 void ClothScene::clear_drag() {
   drag_.reset();
-  simulator_.clear_external_forces();
+  built_.simulator.clear_external_forces();
+}
+
+Result<void> ClothScene::move_collider(int index, const RigidPose& pose) {
+  const int count = static_cast<int>(colliders().size());
+  if (index < 0 || index >= count) {
+    return fail("collider " + std::to_string(index) + " is out of range (the scene has " +
+                std::to_string(count) + ")");
+  }
+  if (!is_finite(pose.position) || !pose.rotation.coeffs().allFinite() ||
+      std::abs(pose.rotation.norm() - 1.0) > 1e-6) {
+    return fail("collider pose must be finite with a unit rotation, got position " +
+                to_string(pose.position));
+  }
+  // Placing the collider here directly could put it across the cloth: the contact term's
+  // obstacles are fixed for a step and CCD does not see them move. The solver's moving
+  // colliders (issue 11) will take the pose as a target and move it within the step.
+  return fail("moving colliders is not available yet (the solver keeps colliders fixed)");
+}
+
+void ClothScene::grab_collider(const ColliderGrab& grab) {
+  collider_drag_ = ColliderDrag{grab, grab.point, grab.pose};
+}
+
+Result<void> ClothScene::drag_collider_to(const Vec3& cursor) {
+  if (!collider_drag_) return fail("no collider is grabbed");
+  if (!is_finite(cursor))
+    return fail("drag target has a non-finite coordinate " + to_string(cursor));
+  collider_drag_->cursor = cursor;
+  collider_drag_->target = dragged_pose(collider_drag_->grab, cursor);
+  return move_collider(collider_drag_->grab.collider, collider_drag_->target);
+}
+
+void ClothScene::contact_points(std::vector<ContactPoint>& out) const {
+  out.clear();
+  if (built_.contact) built_.contact->contact_points(simulator().state().positions, out);
 }
 
 Result<StepReport> ClothScene::step() {
   if (drag_) {
     // The mouse spring, evaluated at the start of the step like gravity.
-    const ClothState& state = simulator_.state();
+    const ClothState& state = simulator().state();
     const int p = drag_->particle;
-    const double m = simulator_.model().mass[p];
+    const double m = simulator().model().mass[p];
     Eigen::VectorXd forces = Eigen::VectorXd::Zero(state.positions.size());
     // The force is explicit (held over the step), so the spring must stay stable on its own:
     // h sqrt(k) <= 1/2 keeps both the spring and its damping (h c <= 1) well inside the
     // explicit stability limit (2) at any time step.
-    const double h = options_.time_step;
+    const double h = world_.time_step;
     const double k = std::min(kDragStiffness, 0.25 / (h * h));
     forces.segment<3>(3 * p) =
         m * (k * (drag_->target - state.position(p)) - 2.0 * std::sqrt(k) * state.velocity(p));
-    if (auto set = simulator_.set_external_forces(forces); !set) return fail(set.error().message);
+    if (auto set = built_.simulator.set_external_forces(forces); !set)
+      return fail(set.error().message);
   }
-  auto report = simulator_.step(options_.time_step);
+  auto report = built_.simulator.step(world_.time_step);
   if (!report) return report;
   last_ = *report;
   energy_.push_back(report->energy);
@@ -140,110 +254,29 @@ Result<StepReport> ClothScene::step() {
   return report;
 }
 
-void describe_cloth(DrawList& out, const ClothModel& model, const ClothState& state,
-                    const ClothStyle& style) {
-  out.add_ground_grid(style.floor_height, 16, 0.25, 0.5);
-  if (style.surface) {
-    // Smooth shading: each vertex normal is the area-weighted sum of its triangles' normals.
-    std::vector<Vec3> normals(model.particle_count(), Vec3::Zero());
-    for (const auto& t : model.triangles) {
-      const Vec3 n = (state.position(t[1]) - state.position(t[0]))
-                         .cross(state.position(t[2]) - state.position(t[0]));
-      for (int k : t) normals[k] += n;
-    }
-    for (Vec3& n : normals) n = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::UnitY();
-    for (const auto& t : model.triangles) {
-      const Vec3 p[3] = {state.position(t[0]), state.position(t[1]), state.position(t[2])};
-      const Vec3 n[3] = {normals[t[0]], normals[t[1]], normals[t[2]]};
-      out.add_triangle(p, n, palette::cloth_front, palette::cloth_back);
-    }
-  }
-  if (style.springs) {
-    for (const auto& [a, b] : model.springs) {
-      out.add_line(state.position(a), state.position(b), palette::spring, 1.0f);
-    }
-  }
-  for (int i = 0; i < model.particle_count(); ++i) {
-    if (model.pinned[i]) {
-      out.add_point(state.position(i), palette::pinned, 10.0f);
-    } else if (style.particles) {
-      out.add_point(state.position(i), palette::particle, 4.0f);
-    }
-  }
-}
-
-// How far below its pins a grid cloth is framed, in sides: the sheet hanging straight down
-// spans one side, and its springs stretch under its weight. Measured on the lab's cloth
-// (k = 100, m = 1, g = 0.3): its lowest point over 20 s is 1.16 sides below the pins. A soft
-// cloth hangs lower (k = 10: 1.98 sides) and passes the floor: it is a drawing aid, not a
-// collider.
-constexpr double kHangingSides = 1.3;
-
-double cloth_floor_height(const GridClothOptions& grid) {
-  return grid.height - (kHangingSides + 0.1) * grid.size;
-}
-
-Eigen::AlignedBox3d cloth_focus_bounds(const GridClothOptions& grid, const ClothState& state) {
-  Eigen::AlignedBox3d box;
-  for (Eigen::Index i = 0; i < state.positions.size() / 3; ++i) {
-    box.extend(Vec3(state.positions.segment<3>(3 * i)));
-  }
-  box.extend(Vec3(0.0, grid.height - kHangingSides * grid.size, -0.5 * grid.size));
-  box.extend(Vec3(grid.size, grid.height, 0.5 * grid.size));
-  return box;
-}
-
-namespace {
-
-// The rest shape's box and the lowest point a sheet hanging from its pins reaches (by the
-// grid's measure: kHangingSides of its largest side below its lowest pin).
-struct Hanging {
-  Eigen::AlignedBox3d rest;
-  double side = 0.0, bottom = 0.0;
-};
-Hanging hanging(const ClothDesc& desc) {
-  Hanging h;
-  double top = std::numeric_limits<double>::infinity();
-  for (const ParticleDesc& p : desc.particles) {
-    h.rest.extend(p.position);
-    if (p.pinned) top = std::min(top, p.position.y());
-  }
-  if (desc.particles.empty()) return h;
-  if (!std::isfinite(top)) top = h.rest.min().y();
-  h.side = h.rest.sizes().maxCoeff();
-  h.bottom = top - kHangingSides * h.side;
-  return h;
-}
-
-}  // namespace
-
-double cloth_floor_height(const ClothDesc& desc) {
-  const Hanging h = hanging(desc);
-  return h.bottom - 0.1 * h.side;
-}
-
-Eigen::AlignedBox3d cloth_focus_bounds(const ClothDesc& desc, const ClothState& state) {
-  const Hanging h = hanging(desc);
-  Eigen::AlignedBox3d box = h.rest;
-  for (Eigen::Index i = 0; i < state.positions.size() / 3; ++i) {
-    box.extend(Vec3(state.positions.segment<3>(3 * i)));
-  }
-  if (!h.rest.isEmpty()) box.extend(Vec3(h.rest.center().x(), h.bottom, h.rest.center().z()));
-  return box;
-}
-
 void ClothScene::describe(DrawList& out, ClothStyle style) const {
-  style.floor_height = cloth_floor_height(options_.grid);
-  describe_cloth(out, simulator_.model(), simulator_.state(), style);
+  style.floor_height = floor_height_;
+  describe_cloth(out, simulator().model(), simulator().state(), style);
+  if (style.colliders) describe_colliders(out, colliders());
+  if (style.contacts) {
+    std::vector<ContactPoint> points;
+    contact_points(points);
+    describe_contact_points(out, points);
+  }
   if (drag_) {
-    const Vec3 grabbed = simulator_.state().position(drag_->particle);
+    const Vec3 grabbed = simulator().state().position(drag_->particle);
     out.add_line(grabbed, drag_->target, palette::dragged, 2.0f);
     out.add_point(drag_->target, palette::dragged, 9.0f);
+  }
+  if (collider_drag_) {
+    // Where the grabbed point is asked to go: the cursor.
+    out.add_line(collider_drag_->grab.point, collider_drag_->cursor, palette::dragged, 2.0f);
+    out.add_point(collider_drag_->cursor, palette::dragged, 9.0f);
   }
 }
 
 Eigen::AlignedBox3d ClothScene::focus_bounds() const {
-  return cloth_focus_bounds(options_.grid, simulator_.state());
+  return cloth_picture_frame(world_, desc_, simulator().state(), colliders()).focus;
 }
 
 }  // namespace animkit

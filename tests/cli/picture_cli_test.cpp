@@ -184,6 +184,36 @@ TEST(Viewer, CapturesTheHangingCloth) {
             420 * 600 / 20);  // hanging: its front faces us
 }
 
+// The collider's violet (palette::collider), lit: bluer than red, red at least green, unlike
+// the background and the floor grid (greener than red) and the cloth's back (far bluer).
+bool is_collider_violet(const Pixel& p) {
+  return p.r > 60 && p.b > p.r + 8 && p.b > p.g + 12 && p.r + 2 >= p.g && p.b < p.r + 45;
+}
+
+TEST(Viewer, CapturesASceneFileWithItsColliderAndContactPoints) {
+  // A small cotton sheet dropped half over a ball on the ground: it slides off the ball and
+  // lies on the ground, every particle in contact with it.
+  const fs::path out = fresh_dir("viewer_scene_file");
+  std::ofstream(out / "side.json") << R"({
+    "cloth": {"grid": 8, "size": 0.6, "height": 0.45, "pins": "none", "material": "cotton",
+              "offset": [-0.3, 0, 0]},
+    "colliders": [{"name": "ball", "shape": "sphere", "radius": 0.2, "position": [0.3, 0.2, 0],
+                   "tessellation": 2}],
+    "ground": {"height": 0}, "solver": {"integrator": "implicit-multigrid", "tolerance": 1e-4},
+    "dt": 0.0333333})";
+  const auto r = run_command(kViewer + " --scene " + (out / "side.json").string() +
+                             " --contacts --frames 12 --size 800x600 --capture " +
+                             (out / "side.png").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Image image = read_png(out / "side.png");
+  const int violet = count_pixels(image, is_collider_violet, 380);
+  const int cloth = count_pixels(image, is_cloth, 380);
+  const int red = count_pixels(image, is_red, 380);  // contact points (and the x axis)
+  EXPECT_GT(violet, 3000);
+  EXPECT_GT(cloth, 3000);
+  EXPECT_GT(red, 400);
+}
+
 TEST(Viewer, RunsThreeFramesInAWindowAndExits) {
   if (run_command("command -v xvfb-run").exit_code != 0) GTEST_SKIP() << "xvfb-run not installed";
   // Leak checking is off for this one run (sanitizer builds): Mesa's GLX driver is unloaded by
@@ -212,7 +242,9 @@ TEST(Viewer, BadOptionsAreRejected) {
   for (const std::string args :
        {"--scene water", "--solver newton", "--shape hexagon --capture x.png --frames 1",
         "--capture x.png", "--size 10x10", "--frames -1", "--integrator rk4",
-        "--scene cloth --grid 0 --capture x.png --frames 1"}) {
+        "--scene cloth --grid 0 --capture x.png --frames 1",
+        "--scene drape-sphere --mass 2 --capture x.png --frames 1",
+        "--scene missing-scene.json --capture x.png --frames 1"}) {
     const auto r = run_command(kViewer + " " + args);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_EQ(r.err.rfind("animkit-viewer: error: ", 0), 0u) << r.err;

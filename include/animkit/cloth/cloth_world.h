@@ -83,5 +83,8 @@ Result<ClothDesc> build_world_cloth(const ClothWorldDesc& desc);
 /// Validates and builds everything. Errors name the first problem, including a particle that
 /// starts inside a collider or on or below the ground.
 Result<ClothWorld> build_cloth_world(const ClothWorldDesc& desc);
+/// The same around a given sheet in place of desc.cloth's (e.g. the viewer's, with pins the
+/// user toggled); desc.cloth is not used.
+Result<ClothWorld> build_cloth_world(const ClothWorldDesc& desc, const ClothDesc& cloth);
 
 }  // namespace animkit

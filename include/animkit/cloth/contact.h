@@ -15,6 +15,7 @@
 // displacement inside VBD-style local solves, and on this project's stiff cloth VBD does not
 // reach 1e-4 relative gradient at all (README, stiff cloth: 0% of cotton's steps within 1000
 // sweeps), where Newton with multigrid converges every step; IPC rides on that Newton.
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -66,6 +67,17 @@ struct ContactStats {
   int candidate_pairs = 0;    ///< pairs the broad phase gathered
 };
 
+/// Where one active pair (closer than the thickness) is closest, for drawing contacts.
+struct ContactPoint {
+  enum class With : std::uint8_t { collider, ground, self };
+  With with = With::collider;  ///< what the cloth touches
+  Vec3 cloth = Vec3::Zero();   ///< world space, m: the nearest point of the cloth's primitive
+  /// World space, m: the nearest point of the other primitive (a collider's, the ground's
+  /// foot point, or the cloth's other primitive for self-contact).
+  Vec3 other = Vec3::Zero();
+  double distance = 0.0;  ///< m, |cloth - other|, in [0, thickness)
+};
+
 class ContactTerm final : public EnergyTerm {
  public:
   /// Fails on invalid settings or obstacles, or a model without triangles.
@@ -112,6 +124,10 @@ class ContactTerm final : public EnergyTerm {
   double stiffness() const;
   /// Contacts at the last iterate.
   ContactStats stats(const Eigen::VectorXd& x) const;
+  /// The closest points of every pair active at x among those the last update() or
+  /// max_step() gathered, in the pairs' order (stats(x).active_pairs of them). `out` is
+  /// resized; its capacity is reused.
+  void contact_points(const Eigen::VectorXd& x, std::vector<ContactPoint>& out) const;
 
   /// What the friction term (friction.h) lags from the same contacts: the settings, the
   /// ground, and the primitives (an internal type of src/cloth/contact/).

@@ -1,8 +1,10 @@
 #pragma once
-// Colliders in a picture: each surface as lit triangles in its pose at a given time. Shared by
-// the scenes the viewer shows and the CLI's pictures.
+// Colliders in a picture: each surface as lit triangles in its pose at a given time or as it
+// stands, and the contacts the cloth makes. Shared by the scenes the viewer shows and the
+// CLI's pictures.
 #include <vector>
 
+#include "animkit/cloth/contact.h"
 #include "animkit/collision/collider.h"
 #include "animkit/scene/draw_list.h"
 
@@ -18,5 +20,13 @@ struct ColliderStyle {
 /// their edges stay sharp.
 void describe_colliders(DrawList& out, const std::vector<Collider>& colliders, double t,
                         const ColliderStyle& style = {});
+/// The same with each collider as it stands (its current pose and world vertices), however it
+/// got there (its motion, or moved by the user).
+void describe_colliders(DrawList& out, const std::vector<Collider>& colliders,
+                        const ColliderStyle& style = {});
+
+/// Appends each contact's closest points, the cloth's (palette::contact) and the other side's
+/// (palette::contact_other), joined by a line.
+void describe_contact_points(DrawList& out, const std::vector<ContactPoint>& points);
 
 }  // namespace animkit

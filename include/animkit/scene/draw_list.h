@@ -34,6 +34,9 @@ inline constexpr Rgba dragged{1.00f, 0.90f, 0.10f, 1.0f};
 inline constexpr Rgba grid{0.62f, 0.64f, 0.68f, 1.0f};
 /// Obstacles the cloth collides with: a muted violet, apart from the cloth's orange and blue.
 inline constexpr Rgba collider{0.56f, 0.52f, 0.66f, 1.0f};
+/// Contact points: the cloth's side red, the other side white.
+inline constexpr Rgba contact{0.90f, 0.05f, 0.05f, 1.0f};
+inline constexpr Rgba contact_other{1.00f, 1.00f, 1.00f, 1.0f};
 inline constexpr Rgba background{0.88f, 0.90f, 0.93f, 1.0f};
 }  // namespace palette
 

@@ -9,6 +9,7 @@
 #include "animkit/core/validation.h"
 #include "contact_candidates.h"
 #include "contact_pair.h"
+#include "contact_points.h"
 #include "moving_obstacles.h"
 
 namespace animkit {
@@ -266,6 +267,28 @@ void ContactTerm::add_to_report(const Eigen::VectorXd& x, StepReport& report) co
   report.has_contact = true;
   report.contact_pairs = s.active_pairs;
   report.min_contact_distance = s.min_distance;
+}
+
+void ContactTerm::contact_points(const Eigen::VectorXd& x, std::vector<ContactPoint>& out) const {
+  out.clear();
+  const int n = impl_->model->particle_count();
+  for (const ContactPair& pair : impl_->pairs) {
+    const std::array<Vec3, 4> p = impl_->positions(x, pair);
+    const double d2 = contact_distance_squared(pair, p, impl_->ground_height());
+    if (d2 >= impl_->barrier.dhat()) continue;
+    const auto [first, second] = contact_closest_points(pair, p, impl_->ground_height());
+    ContactPoint point{.cloth = first, .other = second, .distance = std::sqrt(d2)};
+    if (pair.kind == ContactKind::ground) {
+      point.with = ContactPoint::With::ground;
+    } else if (pair.vertices[0] >= n || pair.vertices[2] >= n) {
+      // One primitive is an obstacle's: the cloth's is whichever starts below n.
+      point.with = ContactPoint::With::collider;
+      if (pair.vertices[0] >= n) std::swap(point.cloth, point.other);
+    } else {
+      point.with = ContactPoint::With::self;
+    }
+    out.push_back(point);
+  }
 }
 
 ContactStats ContactTerm::stats(const Eigen::VectorXd& x) const {
