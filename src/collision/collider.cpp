@@ -117,6 +117,14 @@ void Collider::set_time(double t) {
   world_vertices_at(t, world_vertices_);
 }
 
+void Collider::set_pose(double t, const RigidPose& pose) {
+  time_ = t;
+  pose_ = pose;
+  const auto& local = model_->surface.vertices;
+  world_vertices_.resize(local.size());
+  for (std::size_t i = 0; i < local.size(); ++i) world_vertices_[i] = pose.to_world(local[i]);
+}
+
 void Collider::world_vertices_at(double t, std::vector<Vec3>& out) const {
   const RigidPose pose = pose_at(model_->desc.motion, t);
   const auto& local = model_->surface.vertices;

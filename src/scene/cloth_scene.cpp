@@ -205,10 +205,9 @@ Result<void> ClothScene::move_collider(int index, const RigidPose& pose) {
     return fail("collider pose must be finite with a unit rotation, got position " +
                 to_string(pose.position));
   }
-  // Placing the collider here directly could put it across the cloth: the contact term's
-  // obstacles are fixed for a step and CCD does not see them move. The solver's moving
-  // colliders (issue 11) will take the pose as a target and move it within the step.
-  return fail("moving colliders is not available yet (the solver keeps colliders fixed)");
+  // Not placed here directly (it could land across the cloth): the contact term takes the
+  // pose as the collider's target and moves it there within the next step, CCD watching.
+  return built_.contact->move_collider(static_cast<std::size_t>(index), pose);
 }
 
 void ClothScene::grab_collider(const ColliderGrab& grab) {
@@ -248,6 +247,10 @@ Result<StepReport> ClothScene::step() {
   }
   auto report = built_.simulator.step(world_.time_step);
   if (!report) return report;
+  // The colliders are drawn where the solver moved them (along their motions, or dragged).
+  const double t = built_.simulator.state().time;
+  for (std::size_t i = 0; built_.contact && i < built_.colliders.size(); ++i)
+    built_.colliders[i].set_pose(t, built_.contact->collider_pose(i));
   last_ = *report;
   energy_.push_back(report->energy);
   if (energy_.size() > kEnergyHistory) energy_.pop_front();

@@ -59,6 +59,9 @@ class Collider {
 
   /// Moves the collider to its pose at time t (s, finite) and updates the world vertices.
   void set_time(double t);
+  /// Places the collider at `pose` (finite, unit rotation) at time t, off its motion: where
+  /// a user dragged it, as the solver reports it (ContactTerm::collider_pose).
+  void set_pose(double t, const RigidPose& pose);
   double time() const { return time_; }
   const RigidPose& pose() const { return pose_; }
   /// The surface's vertices at time(), world space, in the model's surface vertex order.

@@ -12,8 +12,7 @@ void MovingObstacles::add(Collider collider, int first_vertex) {
   // its first orientation (so its tessellation does not sweep into cloth resting on it), and
   // friction still feels the spin (begin_substep).
   const bool round = std::holds_alternative<SphereShape>(collider.model().desc.shape);
-  surface_rotation_.push_back(round ? std::optional<Quat>(collider.pose().rotation)
-                                    : std::nullopt);
+  surface_rotation_.push_back(round ? std::optional<Quat>(collider.pose().rotation) : std::nullopt);
   poses_.push_back(collider.pose());
   aims_.push_back(collider.pose());
   colliders_.push_back(std::move(collider));

@@ -60,11 +60,11 @@ class MovingObstacles {
   std::vector<Collider> colliders_;
   std::vector<int> first_vertex_;
   std::vector<std::optional<RigidPose>> targets_;
-  std::vector<RigidPose> poses_, aims_;  // reached, and aimed at in this substep
+  std::vector<RigidPose> poses_, aims_;                // reached, and aimed at in this substep
   std::vector<std::optional<Quat>> surface_rotation_;  // a sphere's surface: never turned
-  Eigen::VectorXd end_, move_, push_;    // obstacles' ends and remaining move; the cloth's push
-  std::vector<double> pushed_;           // per particle: the push's length so far
-  std::vector<Vec3> surface_;            // one collider's world vertices
+  Eigen::VectorXd end_, move_, push_;  // obstacles' ends and remaining move; the cloth's push
+  std::vector<double> pushed_;         // per particle: the push's length so far
+  std::vector<Vec3> surface_;          // one collider's world vertices
   bool settled_ = true;
 };
 
