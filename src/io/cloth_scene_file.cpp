@@ -240,7 +240,7 @@ Result<ClothWorldDesc> parse_cloth_scene(std::string_view text, std::string_view
   try {
     document = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {  // syntax, or a number beyond a double
-    return fail(prefix + "not valid JSON (" + sanitize_message(e.what()) + ")");
+    return fail(prefix + "not valid JSON (" + sanitize_message(e.what(), 300) + ")");
   }
   ClothWorldDesc desc;
   try {
