@@ -65,7 +65,9 @@ AirTerm::AirTerm(const ClothModel& model, const AirSettings& settings)
 void AirTerm::prepare(const ClothState& state, double h) {
   h_ = h;
   x_start_ = state.positions;
-  const double t_end = time_ + h;  // implicit Euler: forces at the substep's end
+  // Implicit Euler: forces at the substep's end, on the simulation's clock (an undone step or
+  // a restored state takes the wind back with it).
+  const double t_end = state.time + h;
   for (std::size_t t = 0; t < triangles_.size(); ++t) {
     const auto [a, b, c] = triangles_[t];
     const Vec3 pa = at(x_start_, a), pb = at(x_start_, b), pc = at(x_start_, c);

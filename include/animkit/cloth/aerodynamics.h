@@ -17,8 +17,7 @@
 // The wind w(x, t) is a constant velocity plus gusts that travel with it: the gust factor
 // s(t - (x . u) / |w0|), u the wind's direction, with s a fixed sum of incommensurate
 // sinusoids in [0, 1], so a flag's cloth meets each gust at its pinned edge first.
-// The term keeps its own clock: each prepare() is one substep of h, evaluated at its end
-// (t_n + h), as implicit Euler does.
+// The wind is evaluated at each substep's end (state.time + h), as implicit Euler does.
 #include <memory>
 #include <optional>
 #include <vector>
@@ -63,7 +62,7 @@ class AirTerm final : public EnergyTerm {
   void add_hessian(const Eigen::VectorXd& x, bool projected,
                    std::vector<HessianBlock>& blocks) const override;
 
-  /// The time the next substep ends at (s since the start).
+  /// The time the last prepared substep ends at (s since the start).
   double time() const { return time_; }
 
  private:
