@@ -53,13 +53,28 @@ bool inside(const std::array<double, 2>& w) {
   return w[0] >= 0.0 && w[1] >= 0.0 && w[0] + w[1] <= 1.0;
 }
 
+// The parameters (s, t) of the closest points a0 + s (a1 - a0) and b0 + t (b1 - b0) of two
+// lines, when both lie strictly inside their segments and the lines are not parallel; else
+// none (the closest points are then at an end: a point-triangle pair covers that case).
+std::optional<std::array<double, 2>> inner_closest_parameters(const Vec3& a0, const Vec3& a1,
+                                                              const Vec3& b0, const Vec3& b1) {
+  const Vec3 u = a1 - a0, v = b1 - b0, w = a0 - b0;
+  const double uu = u.dot(u), uv = u.dot(v), vv = v.dot(v), uw = u.dot(w), vw = v.dot(w);
+  const double det = uu * vv - uv * uv;
+  if (!(det > 1e-12 * uu * vv)) return std::nullopt;  // parallel within rounding
+  const double s = (uv * vw - vv * uw) / det, t = (uu * vw - uv * uw) / det;
+  if (!(s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0)) return std::nullopt;
+  return std::array<double, 2>{s, t};
+}
+
 }  // namespace
 
-// Two cases, each a point over a face: a particle over an obstacle face, and an obstacle vertex
-// under a cloth triangle (a coarse cloth meets a finer collider through its triangles'
-// insides). The normal and the gap are taken where everything is now; the face's or the
-// vertex's move along the normal, less the gap beyond half the contact distance, is what the
-// cloth lacks. A particle pushed several ways takes the largest push.
+// Three cases: a particle over an obstacle face, an obstacle vertex under a cloth triangle (a
+// coarse cloth meets a finer collider through its triangles' insides), and an obstacle edge
+// crossing a cloth edge (a box's edge sweeping across the sheet). The normal and the gap are
+// taken where everything is now; the obstacle's move along the normal, less the gap beyond half
+// the contact distance, is what the cloth lacks. A particle pushed several ways takes the
+// largest push.
 void MovingObstacles::push_cloth(const ContactGeometry& g, const std::vector<char>& pinned,
                                  const Eigen::VectorXd& x, double radius,
                                  const std::vector<ContactPair>& pairs) {
@@ -77,6 +92,26 @@ void MovingObstacles::push_cloth(const ContactGeometry& g, const std::vector<cha
     push_.segment<3>(3 * p) = lack * normal;
   };
   for (const ContactPair& pair : pairs) {
+    if (pair.kind == ContactKind::edge_edge) {
+      // Edges (a0, a1) and (b0, b1): one of them the cloth's, the other an obstacle's.
+      const bool cloth_first = pair.vertices[0] < n;
+      if (cloth_first == (pair.vertices[2] < n)) continue;
+      const int c = cloth_first ? 0 : 2, o = 2 - c;  // the cloth's edge, the obstacle's
+      const Vec3 c0 = position(pair.vertices[c]), c1 = position(pair.vertices[c + 1]);
+      const Vec3 o0 = position(pair.vertices[o]), o1 = position(pair.vertices[o + 1]);
+      const auto st = inner_closest_parameters(c0, c1, o0, o1);
+      if (!st) continue;
+      const auto [s, t] = *st;
+      Vec3 normal = (c0 + s * (c1 - c0)) - (o0 + t * (o1 - o0));  // from the obstacle's edge
+      const double gap = normal.norm();
+      if (!(gap > 0.0)) continue;
+      normal /= gap;
+      const Vec3 edge_move = (1.0 - t) * moving(pair.vertices[o]) + t * moving(pair.vertices[o + 1]);
+      const double lack = edge_move.dot(normal) - (gap - 0.5 * radius);
+      push(pair.vertices[c], lack, normal);
+      push(pair.vertices[c + 1], lack, normal);
+      continue;
+    }
     if (pair.kind != ContactKind::point_triangle) continue;
     const int p = pair.vertices[0];
     const bool cloth_point = p < n;

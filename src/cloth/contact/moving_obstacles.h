@@ -9,8 +9,9 @@
 // fixed (its energy differences stay those of one function); between iterates the obstacles
 // advance along their lines and push the cloth in their way along: every free particle the
 // obstacles' move would bring closer than half the contact distance to an obstacle face (over
-// the face itself) gets the part of that face's move along its normal which it lacks to stay
-// there (frictionless contact pushes along the normal only). Obstacles and cloth then move
+// the face itself), or under an obstacle vertex, or across an obstacle edge, gets the part of
+// that face's, vertex's or edge's move along the normal which it lacks to stay there
+// (frictionless contact pushes along the normal only). Obstacles and cloth then move
 // together, linearly, by the largest fraction of both moves at which Additive CCD
 // (collision/ccd.h) keeps every pair (obstacle-cloth, cloth-cloth, cloth-ground) at least
 // min_separation of its distance before the move: the same rule as the cloth's own step bound,
