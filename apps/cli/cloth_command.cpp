@@ -113,6 +113,18 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
   if (!world) return report_error(world.error().message);
   ClothSimulator* sim = &world->simulator;
   const std::vector<Collider>* colliders = &world->colliders;
+  // The colliders where the solver has them: on their paths after every converged step, short
+  // of them after a step CCD held a collider back (drawn and cached where it really is).
+  std::vector<Collider> posed = *colliders;
+  const auto solver_colliders = [&]() -> const std::vector<Collider>& {
+    for (std::size_t i = 0; world->contact && i < posed.size(); ++i)
+      posed[i].set_pose(sim->state().time, world->contact->collider_pose(i));
+    return posed;
+  };
+  const auto solver_collider_points = [&] {
+    return world->contact ? world->contact->collider_points()
+                          : collider_points(*colliders, sim->state().time);
+  };
 
   // Opened before the run, so a missing OpenGL or ffmpeg stops it before any file is written.
   PictureArgs picture_args = args.pictures;
@@ -128,7 +140,7 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
   const auto describe_state = [&] {
     picture.clear();
     describe_cloth(picture, sim->model(), sim->state(), {.floor_height = floor_height});
-    describe_colliders(picture, *colliders, sim->state().time);
+    describe_colliders(picture, solver_colliders());
   };
   if (pictures->take_video_frame()) {
     describe_state();
@@ -150,7 +162,7 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
           Pc2Writer::open(out / "colliders.pc2", collider_point_count(*colliders));
       if (!opened_colliders) return report_error(opened_colliders.error().message);
       collider_cache.emplace(std::move(*opened_colliders));
-      if (auto ok = collider_cache->add_frame(collider_points(*colliders, sim->state().time)); !ok)
+      if (auto ok = collider_cache->add_frame(solver_collider_points()); !ok)
         return report_error(ok.error().message);
     }
   }
@@ -164,8 +176,7 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
       if (auto ok = cache->add_frame(s.state().positions); !ok) return ok;
     }
     if (collider_cache) {
-      if (auto ok = collider_cache->add_frame(collider_points(*colliders, s.state().time)); !ok)
-        return ok;
+      if (auto ok = collider_cache->add_frame(solver_collider_points()); !ok) return ok;
     }
     if (pictures->take_video_frame()) {
       describe_state();
