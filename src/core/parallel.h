@@ -45,6 +45,21 @@ void for_each(int count, F&& f) {
   for (int i = 0; i < count; ++i) f(i);
 }
 
+/// for_each for loops whose iterations each cost about `weight` (>= 1) light iterations (a
+/// contact pair's barrier and its 12 x 12 eigendecomposition): parallel from kMinParallelWork /
+/// weight iterations on.
+template <class F>
+void for_each_weighted(int count, int weight, F&& f) {
+  const long work = static_cast<long>(count) * weight;
+  const int threads = work < kMinParallelWork ? 1 : thread_count();
+  if (threads == 1) {
+    for (int i = 0; i < count; ++i) f(i);
+    return;
+  }
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads)
+  for (int i = 0; i < count; ++i) f(i);
+}
+
 /// f(e) for every element of `schedule` (an ElementSchedule): its even segments, then its odd
 /// ones, each segment in order; the segments of one parity split over the threads when the
 /// schedule allows it.

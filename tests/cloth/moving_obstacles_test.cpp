@@ -232,11 +232,13 @@ TEST(MovingObstacles, AColliderDraggedByHandPushesTheClothWithTheSameGuarantee) 
   // A static ball the viewer drags through a hanging sheet, 2 cm per frame.
   SimulationOptions options = newton();
   options.substeps = 4;
-  World w = make_world(hanging_sheet(8, 0.5, 0.25),
-                       {collider(SphereShape{0.1}, ScriptedMotion{.initial = {
-                                                                      .position = Vec3(0, 0, -0.12),
-                                                                  }})},
-                       options);
+  World w =
+      make_world(hanging_sheet(8, 0.5, 0.25),
+                 {collider(SphereShape{0.1}, ScriptedMotion{.initial =
+                                                                {
+                                                                    .position = Vec3(0, 0, -0.12),
+                                                                }})},
+                 options);
   const ClothState start = w.sim.state();
   for (int frame = 1; frame <= 10; ++frame) {
     const RigidPose target{Vec3(0.0, 0.0, -0.12 + 0.02 * frame), Quat::Identity()};

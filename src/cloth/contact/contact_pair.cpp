@@ -95,4 +95,19 @@ StencilDerivatives<4> contact_barrier_derivatives(const ContactPair& pair,
   return out;
 }
 
+Eigen::Matrix<double, 12, 1> contact_barrier_gradient(const ContactPair& pair,
+                                                      const std::array<Vec3, 4>& p, double ground,
+                                                      const LogBarrier& barrier) {
+  const StencilDerivatives<4> d = distance_derivatives(pair, p, ground);
+  assert(d.value > 0.0 && "a contact pair's derivatives need a positive distance");
+  if (!(d.value < barrier.dhat())) return Eigen::Matrix<double, 12, 1>::Zero();  // inactive
+  Eigen::Matrix<double, 12, 1> gradient = barrier.first_derivative(d.value) * d.gradient;
+  if (pair.kind == ContactKind::edge_edge) {
+    const StencilDerivatives<4> m =
+        edge_edge_mollifier_derivatives(p[0], p[1], p[2], p[3], pair.mollifier_threshold);
+    gradient = m.value * gradient + barrier.value(d.value) * m.gradient;
+  }
+  return gradient;
+}
+
 }  // namespace animkit

@@ -48,4 +48,10 @@ StencilDerivatives<4> contact_barrier_derivatives(const ContactPair& pair,
                                                   const std::array<Vec3, 4>& p, double ground,
                                                   const LogBarrier& barrier, bool project = true);
 
+/// The barrier's gradient alone (the same numbers as contact_barrier_derivatives' gradient),
+/// without the Hessian's assembly and projection, which cost most of a pair's evaluation.
+Eigen::Matrix<double, 12, 1> contact_barrier_gradient(const ContactPair& pair,
+                                                      const std::array<Vec3, 4>& p, double ground,
+                                                      const LogBarrier& barrier);
+
 }  // namespace animkit

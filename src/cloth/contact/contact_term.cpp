@@ -4,6 +4,7 @@
 #include <map>
 #include <string>
 
+#include "../../core/parallel.h"
 #include "animkit/cloth/contact.h"
 #include "animkit/core/quote.h"
 #include "animkit/core/validation.h"
@@ -21,6 +22,10 @@ namespace {
 // automatic kappa makes that the weight of an average particle, so cloth resting on a surface
 // sits at about half its thickness; heavier loads press closer, where the barrier is steeper.
 constexpr double kHalfThicknessForce = 4.3294;
+
+// A pair's barrier derivatives (a 12 x 12 Hessian and its eigendecomposition) cost about as
+// much as this many iterations of a light per-particle loop (parallel::for_each_weighted).
+constexpr int kPairWeight = 64;
 
 }  // namespace
 
@@ -68,14 +73,36 @@ struct ContactTerm::Impl {
   }
   double ground_height() const { return ground.value_or(0.0); }
 
-  // Calls visit(pair, derivatives) for every pair within dhat at x (the barrier without kappa).
-  template <class Visit>
-  void for_each_active(const Eigen::VectorXd& x, Visit visit) const {
-    for (const ContactPair& pair : pairs) {
+  // Per pair at x, each pair into its own slot, computed over the threads (the pairs are then
+  // summed in their order, so the bits do not depend on the thread count): the barrier's
+  // gradient (without kappa; zero beyond dhat), or whether the pair is active and its
+  // projected Hessian.
+  mutable std::vector<Eigen::Matrix<double, 12, 1>> pair_gradients;
+  mutable std::vector<char> pair_active;
+  mutable std::vector<Eigen::Matrix<double, 12, 12>> pair_hessians;
+
+  void evaluate_gradients(const Eigen::VectorXd& x) const {
+    pair_gradients.resize(pairs.size());
+    parallel::for_each_weighted(static_cast<int>(pairs.size()), kPairWeight, [&](int k) {
+      const ContactPair& pair = pairs[static_cast<std::size_t>(k)];
       const std::array<Vec3, 4> p = positions(x, pair);
-      if (contact_distance_squared(pair, p, ground_height()) >= barrier.dhat()) continue;
-      visit(pair, contact_barrier_derivatives(pair, p, ground_height(), barrier));
-    }
+      pair_gradients[static_cast<std::size_t>(k)] =
+          contact_distance_squared(pair, p, ground_height()) >= barrier.dhat()
+              ? Eigen::Matrix<double, 12, 1>::Zero()
+              : contact_barrier_gradient(pair, p, ground_height(), barrier);
+    });
+  }
+  void evaluate_hessians(const Eigen::VectorXd& x) const {
+    pair_active.resize(pairs.size());
+    pair_hessians.resize(pairs.size());
+    parallel::for_each_weighted(static_cast<int>(pairs.size()), kPairWeight, [&](int k) {
+      const auto at = static_cast<std::size_t>(k);
+      const ContactPair& pair = pairs[at];
+      const std::array<Vec3, 4> p = positions(x, pair);
+      pair_active[at] = contact_distance_squared(pair, p, ground_height()) < barrier.dhat();
+      if (pair_active[at])
+        pair_hessians[at] = contact_barrier_derivatives(pair, p, ground_height(), barrier).hessian;
+    });
   }
 };
 
@@ -238,28 +265,35 @@ double ContactTerm::difference(const Eigen::VectorXd& x, const Eigen::VectorXd& 
 
 void ContactTerm::add_gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const {
   const int n = impl_->model->particle_count();
-  impl_->for_each_active(x, [&](const ContactPair& pair, const StencilDerivatives<4>& d) {
+  impl_->evaluate_gradients(x);
+  for (std::size_t k = 0; k < impl_->pairs.size(); ++k) {
+    const ContactPair& pair = impl_->pairs[k];
     for (int i = 0; i < pair.vertex_count(); ++i) {
       const int v = pair.vertices[i];
-      if (v < n) gradient.segment<3>(3 * v) += impl_->kappa * d.gradient.segment<3>(3 * i);
+      if (v < n)
+        gradient.segment<3>(3 * v) += impl_->kappa * impl_->pair_gradients[k].segment<3>(3 * i);
     }
-  });
+  }
 }
 
 void ContactTerm::add_hessian(const Eigen::VectorXd& x, bool /*projected: always*/,
                               std::vector<HessianBlock>& blocks) const {
   const int n = impl_->model->particle_count();
-  impl_->for_each_active(x, [&](const ContactPair& pair, const StencilDerivatives<4>& d) {
+  impl_->evaluate_hessians(x);
+  for (std::size_t k = 0; k < impl_->pairs.size(); ++k) {
+    if (!impl_->pair_active[k]) continue;
+    const ContactPair& pair = impl_->pairs[k];
+    const Eigen::Matrix<double, 12, 12>& hessian = impl_->pair_hessians[k];
     // The cloth's rows and columns of the pair's PSD Hessian (a principal submatrix: PSD too).
     for (int i = 0; i < pair.vertex_count(); ++i) {
       if (pair.vertices[i] >= n) continue;
       for (int j = i; j < pair.vertex_count(); ++j) {
         if (pair.vertices[j] >= n) continue;
-        blocks.push_back({pair.vertices[i], pair.vertices[j],
-                          impl_->kappa * d.hessian.block<3, 3>(3 * i, 3 * j)});
+        blocks.push_back(
+            {pair.vertices[i], pair.vertices[j], impl_->kappa * hessian.block<3, 3>(3 * i, 3 * j)});
       }
     }
-  });
+  }
 }
 
 void ContactTerm::add_to_report(const Eigen::VectorXd& x, StepReport& report) const {

@@ -106,7 +106,8 @@ void MovingObstacles::push_cloth(const ContactGeometry& g, const std::vector<cha
       const double gap = normal.norm();
       if (!(gap > 0.0)) continue;
       normal /= gap;
-      const Vec3 edge_move = (1.0 - t) * moving(pair.vertices[o]) + t * moving(pair.vertices[o + 1]);
+      const Vec3 edge_move =
+          (1.0 - t) * moving(pair.vertices[o]) + t * moving(pair.vertices[o + 1]);
       const double lack = edge_move.dot(normal) - (gap - 0.5 * radius);
       push(pair.vertices[c], lack, normal);
       push(pair.vertices[c + 1], lack, normal);
