@@ -1,0 +1,204 @@
+#include "animkit/kinematics/joint_limits.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "animkit/core/quaternion_math.h"
+#include "animkit/core/validation.h"
+
+namespace animkit {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// How far a limit's axis may stray from unit length (as for a chain's rotations).
+constexpr double kUnitTolerance = 1e-6;
+
+std::optional<Error> check_axis(const char* what, const Vec3& axis) {
+  if (!is_finite(axis)) return Error{std::string(what) + " has a non-finite coordinate"};
+  if (std::abs(axis.norm() - 1.0) > kUnitTolerance) {
+    return Error{std::string(what) + " is not unit length (norm " + format_number(axis.norm()) +
+                 ")"};
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> check_range(const char* what, double lo, double hi) {
+  const std::string name(what);
+  if (!std::isfinite(lo) || !std::isfinite(hi)) return Error{name + " has a non-finite angle"};
+  if (lo < -kPi || hi > kPi) {
+    return Error{name + " [" + format_number(lo) + ", " + format_number(hi) +
+                 "] rad is not within [-pi, pi]"};
+  }
+  if (lo > hi) {
+    return Error{name + " minimum " + format_number(lo) + " rad is above its maximum " +
+                 format_number(hi) + " rad"};
+  }
+  return std::nullopt;
+}
+
+// q and -q are one rotation; pick the sign with w > 0, breaking a tie at w == 0 by the first
+// non-zero of (twist component, x, y, z) so that q and -q decompose to the same quaternions.
+Quat canonical(const Quat& q, const Vec3& axis) {
+  const double keys[] = {q.w(), q.vec().dot(axis), q.x(), q.y(), q.z()};
+  for (double k : keys) {
+    if (k > 0.0) return q;
+    if (k < 0.0) return Quat(-q.w(), -q.x(), -q.y(), -q.z());
+  }
+  return q;
+}
+
+// Angle in [0, pi] of a unit quaternion with w >= 0 (atan2: accurate near 0 and near pi).
+double angle_of(const Quat& q) {
+  return 2.0 * std::atan2(q.vec().norm(), std::abs(q.w()));
+}
+
+// x wrapped into [-pi, pi].
+double wrap(double x) {
+  return x - 2.0 * kPi * std::round(x / (2.0 * kPi));
+}
+
+// Whether the rotation angle `angle` (any representative mod 2 pi) lies in [lo, hi].
+bool in_range(double angle, double lo, double hi) {
+  for (double a : {angle, angle - 2.0 * kPi, angle + 2.0 * kPi}) {
+    if (a >= lo - kJointLimitTolerance && a <= hi + kJointLimitTolerance) return true;
+  }
+  return false;
+}
+
+// Distances round the circle from `angle` to the range's two ends; outside the range the
+// nearest angle inside is the nearer end (the range is an arc shorter than the full circle).
+double distance_to_end(double angle, double end) {
+  return std::abs(wrap(angle - end));
+}
+
+double clamp_angle(double angle, double lo, double hi) {
+  if (in_range(angle, lo, hi)) return angle;
+  return distance_to_end(angle, lo) <= distance_to_end(angle, hi) ? lo : hi;
+}
+
+double angle_excess(double angle, double lo, double hi) {
+  if (in_range(angle, lo, hi)) return 0.0;
+  return std::min(distance_to_end(angle, lo), distance_to_end(angle, hi));
+}
+
+Quat about_axis(double angle, const Vec3& unit_axis) {
+  const Vec3 v = std::sin(0.5 * angle) * unit_axis;
+  return Quat(std::cos(0.5 * angle), v.x(), v.y(), v.z());
+}
+
+// The parts of q a limit looks at, with the axis made exactly unit.
+struct Parts {
+  SwingTwist st;
+  double swing = 0.0;  // radians, [0, pi]
+  double twist = 0.0;  // radians, [-pi, pi]
+};
+
+Parts parts_of(const Quat& q, const Vec3& unit_axis) {
+  Parts p;
+  p.st = swing_twist(q, unit_axis);
+  p.swing = angle_of(p.st.swing);
+  p.twist = twist_angle(p.st.twist, unit_axis);
+  return p;
+}
+
+bool hinge_inside(const HingeLimit& h, const Parts& p) {
+  return p.swing <= kJointLimitTolerance && in_range(p.twist, h.min_angle, h.max_angle);
+}
+
+bool ball_swing_inside(const BallLimit& b, const Parts& p) {
+  return p.swing <= b.swing_angle + kJointLimitTolerance;
+}
+
+Quat constrain_hinge(const HingeLimit& h, const Quat& q) {
+  const Vec3 axis = h.axis.normalized();
+  const Parts p = parts_of(q, axis);
+  if (hinge_inside(h, p)) return q;
+  // The nearest rotation about the axis is q's twist: for r = (cos t/2, sin t/2 axis),
+  // |<q, r>| = n |cos((t - phi)/2)| with n = |(w, v.axis)| and phi the twist angle, which is
+  // largest (the rotation between them smallest) for t nearest phi round the circle.
+  if (in_range(p.twist, h.min_angle, h.max_angle)) return p.st.twist;
+  return about_axis(clamp_angle(p.twist, h.min_angle, h.max_angle), axis);
+}
+
+Quat constrain_ball(const BallLimit& b, const Quat& q) {
+  const Vec3 axis = b.twist_axis.normalized();
+  const Parts p = parts_of(q, axis);
+  const bool swing_ok = ball_swing_inside(b, p);
+  const bool twist_ok = in_range(p.twist, b.min_twist, b.max_twist);
+  if (swing_ok && twist_ok) return q;
+  // The swing turns the bone from `axis` along a great circle; stopping it at the cone's
+  // edge on that circle is the direction in the cone nearest the bone's (geodesic distance).
+  // swing > cone >= 0 here, so the swing's axis is defined.
+  const Quat swing =
+      swing_ok ? p.st.swing : about_axis(b.swing_angle, p.st.swing.vec().normalized());
+  const Quat twist =
+      twist_ok ? p.st.twist : about_axis(clamp_angle(p.twist, b.min_twist, b.max_twist), axis);
+  return (swing * twist).normalized();
+}
+
+}  // namespace
+
+std::optional<Error> HingeLimit::validate() const {
+  if (auto e = check_axis("hinge axis", axis)) return e;
+  return check_range("hinge angle range", min_angle, max_angle);
+}
+
+std::optional<Error> BallLimit::validate() const {
+  if (auto e = check_axis("ball twist axis", twist_axis)) return e;
+  if (!std::isfinite(swing_angle) || swing_angle < 0.0 || swing_angle > kPi) {
+    return Error{"ball swing cone half-angle " + format_number(swing_angle) +
+                 " rad is not within [0, pi]"};
+  }
+  return check_range("ball twist range", min_twist, max_twist);
+}
+
+std::optional<Error> validate(const JointLimit& limit) {
+  if (const auto* h = std::get_if<HingeLimit>(&limit)) return h->validate();
+  if (const auto* b = std::get_if<BallLimit>(&limit)) return b->validate();
+  return std::nullopt;
+}
+
+SwingTwist swing_twist(const Quat& q, const Vec3& axis) {
+  // Twist = q's projection onto the rotations about `axis`, (w, (v.axis) axis), normalized;
+  // swing = q * conj(twist), whose vector part is perpendicular to the axis. With w >= 0 both
+  // parts have w >= 0. hypot keeps n accurate where w and v.axis are tiny (swing near pi).
+  const Quat c = canonical(q, axis);
+  const double t = c.vec().dot(axis);
+  const double n = std::hypot(c.w(), t);
+  SwingTwist out{c, Quat::Identity()};
+  if (n == 0.0) return out;  // a swing of exactly pi: every twist fits; take none
+  const Vec3 tv = (t / n) * axis;
+  out.twist = Quat(c.w() / n, tv.x(), tv.y(), tv.z()).normalized();
+  Quat swing = c * out.twist.conjugate();
+  // Remove the rounding left along the axis so the swing's axis is perpendicular to it.
+  swing.vec() -= swing.vec().dot(axis) * axis;
+  out.swing = swing.normalized();
+  return out;
+}
+
+double twist_angle(const Quat& twist, const Vec3& axis) {
+  return 2.0 * std::atan2(twist.vec().dot(axis), twist.w());
+}
+
+Quat constrain(const JointLimit& limit, const Quat& q) {
+  if (const auto* h = std::get_if<HingeLimit>(&limit)) return constrain_hinge(*h, q);
+  if (const auto* b = std::get_if<BallLimit>(&limit)) return constrain_ball(*b, q);
+  return q;
+}
+
+double violation(const JointLimit& limit, const Quat& q) {
+  if (const auto* h = std::get_if<HingeLimit>(&limit)) {
+    if (hinge_inside(*h, parts_of(q, h->axis.normalized()))) return 0.0;
+    return rotation_angle_between(q, constrain_hinge(*h, q));
+  }
+  if (const auto* b = std::get_if<BallLimit>(&limit)) {
+    const Parts p = parts_of(q, b->twist_axis.normalized());
+    const double swing_excess = ball_swing_inside(*b, p) ? 0.0 : p.swing - b->swing_angle;
+    return swing_excess + angle_excess(p.twist, b->min_twist, b->max_twist);
+  }
+  return 0.0;
+}
+
+}  // namespace animkit
