@@ -1,6 +1,7 @@
 #include "animkit/kinematics/joint_limits.h"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -59,10 +60,11 @@ double wrap(double x) {
   return x - 2.0 * kPi * std::round(x / (2.0 * kPi));
 }
 
-// Whether the rotation angle `angle` (any representative mod 2 pi) lies in [lo, hi].
-bool in_range(double angle, double lo, double hi) {
+// Whether the rotation angle `angle` (any representative mod 2 pi) lies in [lo, hi], give or
+// take `slack`.
+bool in_range(double angle, double lo, double hi, double slack = kJointLimitTolerance) {
   for (double a : {angle, angle - 2.0 * kPi, angle + 2.0 * kPi}) {
-    if (a >= lo - kJointLimitTolerance && a <= hi + kJointLimitTolerance) return true;
+    if (a >= lo - slack && a <= hi + slack) return true;
   }
   return false;
 }
@@ -73,13 +75,13 @@ double distance_to_end(double angle, double end) {
   return std::abs(wrap(angle - end));
 }
 
-double clamp_angle(double angle, double lo, double hi) {
-  if (in_range(angle, lo, hi)) return angle;
+// The nearest angle in [lo, hi] to an `angle` outside it.
+double clamp_outside_angle(double angle, double lo, double hi) {
   return distance_to_end(angle, lo) <= distance_to_end(angle, hi) ? lo : hi;
 }
 
-double angle_excess(double angle, double lo, double hi) {
-  if (in_range(angle, lo, hi)) return 0.0;
+double angle_excess(double angle, double lo, double hi, double slack) {
+  if (in_range(angle, lo, hi, slack)) return 0.0;
   return std::min(distance_to_end(angle, lo), distance_to_end(angle, hi));
 }
 
@@ -93,6 +95,10 @@ struct Parts {
   SwingTwist st;
   double swing = 0.0;  // radians, [0, pi]
   double twist = 0.0;  // radians, [-pi, pi]
+  // How far the twist angle can be off by rounding alone. twist = 2 atan2(v.axis, w) with n =
+  // |(w, v.axis)| = cos(swing / 2): components rounded by a few eps move it by ~eps / n, which
+  // grows without bound as the swing nears a half turn (where the twist is undefined).
+  double twist_slack = kJointLimitTolerance;
 };
 
 Parts parts_of(const Quat& q, const Vec3& unit_axis) {
@@ -100,6 +106,11 @@ Parts parts_of(const Quat& q, const Vec3& unit_axis) {
   p.st = swing_twist(q, unit_axis);
   p.swing = angle_of(p.st.swing);
   p.twist = twist_angle(p.st.twist, unit_axis);
+  const double n = p.st.swing.w();
+  const double noise = 16.0 * std::numeric_limits<double>::epsilon();
+  if (n * kJointLimitTolerance < noise) {
+    p.twist_slack = n > 1e-300 ? noise / n : std::numeric_limits<double>::infinity();
+  }
   return p;
 }
 
@@ -119,22 +130,23 @@ Quat constrain_hinge(const HingeLimit& h, const Quat& q) {
   // |<q, r>| = n |cos((t - phi)/2)| with n = |(w, v.axis)| and phi the twist angle, which is
   // largest (the rotation between them smallest) for t nearest phi round the circle.
   if (in_range(p.twist, h.min_angle, h.max_angle)) return p.st.twist;
-  return about_axis(clamp_angle(p.twist, h.min_angle, h.max_angle), axis);
+  return about_axis(clamp_outside_angle(p.twist, h.min_angle, h.max_angle), axis);
 }
 
 Quat constrain_ball(const BallLimit& b, const Quat& q) {
   const Vec3 axis = b.twist_axis.normalized();
   const Parts p = parts_of(q, axis);
   const bool swing_ok = ball_swing_inside(b, p);
-  const bool twist_ok = in_range(p.twist, b.min_twist, b.max_twist);
+  const bool twist_ok = in_range(p.twist, b.min_twist, b.max_twist, p.twist_slack);
   if (swing_ok && twist_ok) return q;
   // The swing turns the bone from `axis` along a great circle; stopping it at the cone's
   // edge on that circle is the direction in the cone nearest the bone's (geodesic distance).
   // swing > cone >= 0 here, so the swing's axis is defined.
   const Quat swing =
       swing_ok ? p.st.swing : about_axis(b.swing_angle, p.st.swing.vec().normalized());
-  const Quat twist =
-      twist_ok ? p.st.twist : about_axis(clamp_angle(p.twist, b.min_twist, b.max_twist), axis);
+  const Quat twist = twist_ok
+                         ? p.st.twist
+                         : about_axis(clamp_outside_angle(p.twist, b.min_twist, b.max_twist), axis);
   return (swing * twist).normalized();
 }
 
@@ -196,7 +208,7 @@ double violation(const JointLimit& limit, const Quat& q) {
   if (const auto* b = std::get_if<BallLimit>(&limit)) {
     const Parts p = parts_of(q, b->twist_axis.normalized());
     const double swing_excess = ball_swing_inside(*b, p) ? 0.0 : p.swing - b->swing_angle;
-    return swing_excess + angle_excess(p.twist, b->min_twist, b->max_twist);
+    return swing_excess + angle_excess(p.twist, b->min_twist, b->max_twist, p.twist_slack);
   }
   return 0.0;
 }

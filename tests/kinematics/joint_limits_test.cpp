@@ -162,6 +162,24 @@ TEST(BallLimit, ConstrainedIsInsideUnitAndIdempotent) {
   }
 }
 
+// Near a half-turn swing the twist is ill-conditioned: a cone at or just short of pi keeps such
+// swings, and constrain() must still land inside and be idempotent there.
+TEST(BallLimit, IdempotentForSwingsNearAHalfTurn) {
+  std::mt19937_64 rng(93);
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 axis = random_axis(rng);
+    const double cone = i % 3 == 0 ? kPi : kPi - std::pow(10.0, uniform(rng, -9, -1));
+    const BallLimit ball{axis, cone, -0.1, 0.1};
+    const Vec3 swing_axis = axis.cross(random_axis(rng)).normalized();
+    const Quat q = about(kPi - std::pow(10.0, uniform(rng, -10, -1)), swing_axis) *
+                   about(uniform(rng, -3, 3), axis);
+    const Quat c = constrain(ball, q);
+    ASSERT_TRUE(c.coeffs().allFinite());
+    EXPECT_EQ(violation(ball, c), 0.0) << i;
+    EXPECT_TRUE(same_bits(constrain(ball, c), c)) << i;
+  }
+}
+
 TEST(BallLimit, InsideRotationsAreReturnedBitForBit) {
   std::mt19937_64 rng(91);
   for (int i = 0; i < 2000; ++i) {

@@ -12,7 +12,9 @@
 namespace animkit {
 
 /// Angles within this many radians beyond a limit count as inside it, so that a constrained
-/// rotation (whose angles carry rounding) is inside and constrain() is idempotent.
+/// rotation (whose angles carry rounding) is inside and constrain() is idempotent. A ball's
+/// twist gets more slack near a half-turn swing, where its angle is ill-conditioned (rounding
+/// moves it by about 16 eps / cos(swing / 2) radians; at exactly a half turn it is undefined).
 constexpr double kJointLimitTolerance = 1e-12;
 
 /// No limit: every rotation is allowed.
