@@ -129,7 +129,9 @@ Quat constrain_hinge(const HingeLimit& h, const Quat& q) {
   // The nearest rotation about the axis is q's twist: for r = (cos t/2, sin t/2 axis),
   // |<q, r>| = n |cos((t - phi)/2)| with n = |(w, v.axis)| and phi the twist angle, which is
   // largest (the rotation between them smallest) for t nearest phi round the circle.
-  if (in_range(p.twist, h.min_angle, h.max_angle)) return p.st.twist;
+  // A new rotation keeps a part only if it is strictly inside (no tolerance), so that the
+  // result's rounding cannot take it past the tolerance; otherwise the part goes to the end.
+  if (in_range(p.twist, h.min_angle, h.max_angle, 0.0)) return p.st.twist;
   return about_axis(clamp_outside_angle(p.twist, h.min_angle, h.max_angle), axis);
 }
 
@@ -141,10 +143,12 @@ Quat constrain_ball(const BallLimit& b, const Quat& q) {
   if (swing_ok && twist_ok) return q;
   // The swing turns the bone from `axis` along a great circle; stopping it at the cone's
   // edge on that circle is the direction in the cone nearest the bone's (geodesic distance).
-  // swing > cone >= 0 here, so the swing's axis is defined.
-  const Quat swing =
-      swing_ok ? p.st.swing : about_axis(b.swing_angle, p.st.swing.vec().normalized());
-  const Quat twist = twist_ok
+  // swing > cone >= 0 there, so the swing's axis is defined. As for the hinge, a part is kept
+  // only if strictly inside: its slack may not hold for the new rotation's conditioning.
+  const Quat swing = p.swing <= b.swing_angle
+                         ? p.st.swing
+                         : about_axis(b.swing_angle, p.st.swing.vec().normalized());
+  const Quat twist = in_range(p.twist, b.min_twist, b.max_twist, 0.0)
                          ? p.st.twist
                          : about_axis(clamp_outside_angle(p.twist, b.min_twist, b.max_twist), axis);
   return (swing * twist).normalized();

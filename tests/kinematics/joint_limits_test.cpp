@@ -180,6 +180,17 @@ TEST(BallLimit, IdempotentForSwingsNearAHalfTurn) {
   }
 }
 
+// A twist past its range by less than the slack of a near half-turn swing is inside; once the
+// swing is clamped into a narrow cone that slack is gone, so the twist must be clamped too.
+TEST(BallLimit, ClampingTheSwingAlsoClampsATwistThatWasInsideOnlyBySlack) {
+  const BallLimit ball{Vec3::UnitY(), 1.0, -0.1, 0.1};
+  const Quat q = about(kPi - 1e-10, Vec3::UnitX()) * about(0.1 + 1e-6, Vec3::UnitY());
+  const Quat c = constrain(ball, q);
+  EXPECT_EQ(violation(ball, c), 0.0);
+  EXPECT_TRUE(same_bits(constrain(ball, c), c));
+  EXPECT_LT(rotation_gap(c, about(1.0, Vec3::UnitX()) * about(0.1, Vec3::UnitY())), 1e-15);
+}
+
 TEST(BallLimit, InsideRotationsAreReturnedBitForBit) {
   std::mt19937_64 rng(91);
   for (int i = 0; i < 2000; ++i) {
