@@ -7,6 +7,7 @@
 
 #include "animkit/core/quaternion_math.h"
 #include "animkit/core/validation.h"
+#include "swing_ellipse.h"
 
 namespace animkit {
 
@@ -118,8 +119,34 @@ bool hinge_inside(const HingeLimit& h, const Parts& p) {
   return p.swing <= kJointLimitTolerance && in_range(p.twist, h.min_angle, h.max_angle);
 }
 
-bool ball_swing_inside(const BallLimit& b, const Parts& p) {
-  return p.swing <= b.swing_angle + kJointLimitTolerance;
+// A ball's swing against its cone: how far beyond it, and the swing to use in a constrained
+// rotation (the swing itself when strictly inside, no tolerance, else the nearest in the cone).
+struct BallSwing {
+  double excess = 0.0;  // radians; the rotation vector's distance to an elliptical cone
+  Quat clamped;
+};
+
+BallSwing ball_swing(const BallLimit& b, const Vec3& axis, const Parts& p) {
+  const Vec3& v = p.st.swing.vec();
+  if (!b.swing_angle_2) {
+    // The swing turns the bone from `axis` along a great circle; stopping it at the cone's
+    // edge on that circle is the direction in the cone nearest the bone's (geodesic distance).
+    // swing > cone >= 0 there, so the swing's axis is defined.
+    if (p.swing <= b.swing_angle) return {0.0, p.st.swing};
+    return {p.swing - b.swing_angle, about_axis(b.swing_angle, v.normalized())};
+  }
+  const double n = v.norm();
+  if (n == 0.0) return {0.0, p.st.swing};  // no swing is inside every cone
+  // The rotation vector r = angle * unit axis, in the cone's plane coordinates.
+  const Vec3 e1 = (b.swing_axis - b.swing_axis.dot(axis) * axis).normalized();
+  const Vec3 e2 = axis.cross(e1);
+  const Vec3 r = (p.swing / n) * v;
+  const Eigen::Vector2d r2(r.dot(e1), r.dot(e2));
+  const Eigen::Vector2d near = nearest_in_ellipse(r2, b.swing_angle, *b.swing_angle_2);
+  if (near == r2) return {0.0, p.st.swing};
+  const Vec3 rv = near.x() * e1 + near.y() * e2;
+  const double angle = rv.norm();
+  return {(r2 - near).norm(), angle > 0.0 ? about_axis(angle, rv / angle) : Quat::Identity()};
 }
 
 Quat constrain_hinge(const HingeLimit& h, const Quat& q) {
@@ -138,20 +165,15 @@ Quat constrain_hinge(const HingeLimit& h, const Quat& q) {
 Quat constrain_ball(const BallLimit& b, const Quat& q) {
   const Vec3 axis = b.twist_axis.normalized();
   const Parts p = parts_of(q, axis);
-  const bool swing_ok = ball_swing_inside(b, p);
+  const BallSwing swing = ball_swing(b, axis, p);
   const bool twist_ok = in_range(p.twist, b.min_twist, b.max_twist, p.twist_slack);
-  if (swing_ok && twist_ok) return q;
-  // The swing turns the bone from `axis` along a great circle; stopping it at the cone's
-  // edge on that circle is the direction in the cone nearest the bone's (geodesic distance).
-  // swing > cone >= 0 there, so the swing's axis is defined. As for the hinge, a part is kept
-  // only if strictly inside: its slack may not hold for the new rotation's conditioning.
-  const Quat swing = p.swing <= b.swing_angle
-                         ? p.st.swing
-                         : about_axis(b.swing_angle, p.st.swing.vec().normalized());
+  if (swing.excess <= kJointLimitTolerance && twist_ok) return q;
+  // As for the hinge, a part is kept only if strictly inside: its tolerance (or the twist's
+  // slack) may not hold for the new rotation.
   const Quat twist = in_range(p.twist, b.min_twist, b.max_twist, 0.0)
                          ? p.st.twist
                          : about_axis(clamp_outside_angle(p.twist, b.min_twist, b.max_twist), axis);
-  return (swing * twist).normalized();
+  return (swing.clamped * twist).normalized();
 }
 
 }  // namespace
@@ -163,9 +185,18 @@ std::optional<Error> HingeLimit::validate() const {
 
 std::optional<Error> BallLimit::validate() const {
   if (auto e = check_axis("ball twist axis", twist_axis)) return e;
-  if (!std::isfinite(swing_angle) || swing_angle < 0.0 || swing_angle > kPi) {
-    return Error{"ball swing cone half-angle " + format_number(swing_angle) +
-                 " rad is not within [0, pi]"};
+  for (const double angle : {swing_angle, swing_angle_2.value_or(0.0)}) {
+    if (!std::isfinite(angle) || angle < 0.0 || angle > kPi) {
+      return Error{"ball swing cone half-angle " + format_number(angle) +
+                   " rad is not within [0, pi]"};
+    }
+  }
+  if (swing_angle_2) {
+    if (auto e = check_axis("ball swing axis", swing_axis)) return e;
+    if (std::abs(swing_axis.dot(twist_axis)) > kUnitTolerance) {
+      return Error{"ball swing axis is not perpendicular to the twist axis (cosine " +
+                   format_number(swing_axis.dot(twist_axis)) + ")"};
+    }
   }
   return check_range("ball twist range", min_twist, max_twist);
 }
@@ -210,8 +241,10 @@ double violation(const JointLimit& limit, const Quat& q) {
     return rotation_angle_between(q, constrain_hinge(*h, q));
   }
   if (const auto* b = std::get_if<BallLimit>(&limit)) {
-    const Parts p = parts_of(q, b->twist_axis.normalized());
-    const double swing_excess = ball_swing_inside(*b, p) ? 0.0 : p.swing - b->swing_angle;
+    const Vec3 axis = b->twist_axis.normalized();
+    const Parts p = parts_of(q, axis);
+    const double excess = ball_swing(*b, axis, p).excess;
+    const double swing_excess = excess <= kJointLimitTolerance ? 0.0 : excess;
     return swing_excess + angle_excess(p.twist, b->min_twist, b->max_twist, p.twist_slack);
   }
   return 0.0;
