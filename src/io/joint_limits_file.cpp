@@ -57,7 +57,7 @@ class LimitReader {
   BallLimit read_ball() {
     BallLimit b;
     b.twist_axis = axis("ball");
-    b.swing_angle = to_radians(angle(required_number("swing", "ball"), "swing", 0.0));
+    read_swing(b);
     double min = -180.0, max = 180.0;
     if (const auto* twist = fields_.array("twist")) {
       if (twist->size() != 2 || !(*twist)[0].is_number() || !(*twist)[1].is_number()) {
@@ -70,6 +70,33 @@ class LimitReader {
     b.min_twist = to_radians(min);
     b.max_twist = to_radians(max);
     return b;
+  }
+
+  // "swing": 80 (a circular cone), or [60, 30] with "swing_axis" (an elliptical one: 60
+  // degrees about swing_axis, 30 about axis x swing_axis).
+  void read_swing(BallLimit& b) {
+    const nlohmann::json* swing = fields_.object("swing");
+    if (!swing) fields_.error("swing", "required for a ball joint");
+    if (!swing->is_array()) {
+      b.swing_angle = to_radians(angle(*fields_.number("swing"), "swing", 0.0));
+      return;
+    }
+    if (swing->size() != 2 || !(*swing)[0].is_number() || !(*swing)[1].is_number()) {
+      fields_.error("swing",
+                    "expected a number or two numbers [about swing_axis, about the "
+                    "third axis] in degrees");
+    }
+    b.swing_angle = to_radians(angle((*swing)[0].get<double>(), "swing", 0.0));
+    b.swing_angle_2 = to_radians(angle((*swing)[1].get<double>(), "swing", 0.0));
+    const auto swing_axis = fields_.vec3("swing_axis");
+    if (!swing_axis) fields_.error("swing_axis", "required with two swing angles");
+    if (swing_axis->norm() == 0.0) fields_.error("swing_axis", "must not be zero");
+    b.swing_axis = swing_axis->normalized();
+    const double cosine = b.swing_axis.dot(b.twist_axis);
+    if (std::abs(cosine) > 1e-6) {
+      fields_.error("swing_axis",
+                    "must be perpendicular to axis (cosine " + format_number(cosine) + ")");
+    }
   }
 
   Vec3 axis(const char* type) {

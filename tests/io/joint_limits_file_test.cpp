@@ -28,10 +28,18 @@ TEST(JointLimitsFile, ReadsHingeBallAndFreeJointsInRadians) {
     "LeftKnee": {"type": "hinge", "axis": [0, 0, 2], "min": 0, "max": 150},
     "LeftHip": {"type": "ball", "axis": [0, -1, 0], "swing": 80, "twist": [-30, 30]},
     "Neck": {"type": "ball", "axis": [0, 1, 0], "swing": 180},
-    "Spine": {"type": "free"}
+    "Spine": {"type": "free"},
+    "LeftShoulder": {"type": "ball", "axis": [1, 0, 0], "swing": [90, 45],
+                     "swing_axis": [0, 0, 3], "twist": [-60, 60]}
   })");
   ASSERT_TRUE(limits) << limits.error().message;
-  ASSERT_EQ(limits->size(), 4u);
+  ASSERT_EQ(limits->size(), 5u);
+  const auto& shoulder = std::get<BallLimit>(limits->at("LeftShoulder"));
+  EXPECT_NEAR(shoulder.swing_angle, kPi / 2.0, 1e-15);
+  ASSERT_TRUE(shoulder.swing_angle_2);
+  EXPECT_NEAR(*shoulder.swing_angle_2, kPi / 4.0, 1e-15);
+  EXPECT_EQ(shoulder.swing_axis, Vec3::UnitZ());
+  EXPECT_FALSE(std::get<BallLimit>(limits->at("LeftHip")).swing_angle_2);
   const auto& knee = std::get<HingeLimit>(limits->at("LeftKnee"));
   EXPECT_EQ(knee.axis, Vec3::UnitZ());
   EXPECT_EQ(knee.min_angle, 0.0);
@@ -88,6 +96,18 @@ TEST(JointLimitsFile, EachMistakeIsNamedByItsKey) {
        "limits.json: Hip.twist: -190 degrees is outside [-180, 180]"},
       {R"({"Hip": {"type": "free", "swing": 45}})",
        "limits.json: Hip: unknown key 'swing' (this object takes: type)"},
+      {R"({"Arm": {"type": "ball", "axis": [1, 0, 0], "swing": [90, 45]}})",
+       "limits.json: Arm.swing_axis: required with two swing angles"},
+      {R"({"Arm": {"type": "ball", "axis": [1, 0, 0], "swing": [90, 45], "swing_axis": [1, 1, 0]}})",
+       "limits.json: Arm.swing_axis: must be perpendicular to axis (cosine 0.707107)"},
+      {R"({"Arm": {"type": "ball", "axis": [1, 0, 0], "swing": [90, 245], "swing_axis": [0, 1, 0]}})",
+       "limits.json: Arm.swing: 245 degrees is outside [0, 180]"},
+      {R"({"Arm": {"type": "ball", "axis": [1, 0, 0], "swing": [90]}})",
+       "limits.json: Arm.swing: expected a number or two numbers [about swing_axis, about the "
+       "third "
+       "axis] in degrees"},
+      {R"({"Arm": {"type": "ball", "axis": [1, 0, 0], "swing": 90, "swing_axis": [0, 1, 0]}})",
+       "limits.json: Arm: unknown key 'swing_axis' (this object takes: axis, swing, twist, type)"},
       {R"({"": {"type": "free"}})", "limits.json: a joint name is empty"},
       {R"({"Hip": {"type": "ball", "axis": [0, 1, 0], "swing": 1e999}})",
        "limits.json: not valid JSON ("},

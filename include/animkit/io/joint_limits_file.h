@@ -5,12 +5,16 @@
 // {
 //   "LeftKnee": {"type": "hinge", "axis": [0, 0, 1], "min": 0, "max": 150},
 //   "LeftHip":  {"type": "ball", "axis": [0, -1, 0], "swing": 80, "twist": [-30, 30]},
+//   "LeftShoulder": {"type": "ball", "axis": [1, 0, 0], "swing": [90, 45],
+//                    "swing_axis": [0, 0, 1], "twist": [-60, 60]},
 //   "Spine":    {"type": "free"}
 // }
 //
 // hinge: "axis", "min", "max" required, min <= max, both in [-180, 180].
 // ball: "axis" (the bone's direction at rest) and "swing" (cone half-angle, [0, 180]) required;
-// "twist": [min, max] in [-180, 180], default [-180, 180] (free twist).
+// "twist": [min, max] in [-180, 180], default [-180, 180] (free twist). An elliptical cone:
+// "swing": [a, b] with "swing_axis" (perpendicular to "axis"): swings up to a degrees about
+// swing_axis and b about axis x swing_axis (BallLimit::swing_angle_2).
 // Unknown keys and out-of-range values are errors naming the key ("LeftKnee.max: ...").
 #include <filesystem>
 #include <map>
