@@ -1,75 +1,20 @@
-// The BVH reader: lines (comments and blank lines dropped) -> the HIERARCHY's tokens parsed
-// with an explicit stack (no recursion, so deep nesting cannot overflow the call stack) ->
-// MOTION's header and one frame per line.
-#include <charconv>
+// The BVH reader: lines (comments and blank lines dropped) -> the HIERARCHY
+// (bvh_hierarchy.cpp) -> MOTION's header and one frame per line.
 #include <cmath>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
-#include "animkit/core/quote.h"
 #include "animkit/core/validation.h"
 #include "animkit/io/bvh.h"
 #include "animkit/io/file_bytes.h"
+#include "bvh_text.h"
 #include "held_fp_exceptions.h"
 
 namespace animkit {
 
 namespace {
 
-constexpr std::string_view kSpaces = " \t\r\v\f";
-
-struct Line {
-  std::string_view text;
-  int number;  // 1-based
-};
-
-struct Token {
-  std::string_view text;
-  int line;
-};
-
-// The next whitespace-separated token of `line`, removed from it (empty at the end).
-std::string_view next_token(std::string_view& line) {
-  const auto first = line.find_first_not_of(kSpaces);
-  if (first == std::string_view::npos) {
-    line = {};
-    return {};
-  }
-  line.remove_prefix(first);
-  const auto end = line.find_first_of(kSpaces);
-  const std::string_view token = line.substr(0, end);
-  line.remove_prefix(end == std::string_view::npos ? line.size() : end);
-  return token;
-}
-
-enum class Number { ok, malformed, not_finite };
-
-// All of `token` as a decimal number ("1e-3", "+2", ".5", "nan" and "inf" read as not finite).
-Number parse_number(std::string_view token, double& value) {
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  const char* end = token.data() + token.size();
-  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
-  if (ptr != end || token.empty()) return Number::malformed;
-  if (ec == std::errc::result_out_of_range || !std::isfinite(value)) return Number::not_finite;
-  return ec == std::errc() ? Number::ok : Number::malformed;
-}
-
-bool parse_count(std::string_view token, long max, long& value) {
-  const char* end = token.data() + token.size();
-  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
-  return !token.empty() && ptr == end && ec == std::errc() && value >= 0 && value <= max;
-}
-
-bool parse_channel(std::string_view token, BvhChannel& channel) {
-  for (int c = 0; c < 6; ++c) {
-    if (token == bvh_channel_name(static_cast<BvhChannel>(c))) {
-      channel = static_cast<BvhChannel>(c);
-      return true;
-    }
-  }
-  return false;
-}
+using namespace bvh_detail;
 
 class BvhReader {
  public:
@@ -78,16 +23,15 @@ class BvhReader {
   Result<BvhClip> read(std::string_view text) {
     if (auto error = split_lines(text)) return std::unexpected(*error);
     if (lines_.empty()) return fail(name_ + ": the file is empty");
-    if (auto error = read_hierarchy()) return std::unexpected(*error);
+    if (auto error = read_bvh_hierarchy(lines_, name_, scale_, clip_, motion_line_)) {
+      return std::unexpected(*error);
+    }
     if (auto error = read_motion()) return std::unexpected(*error);
-    name_end_sites();
     return std::move(clip_);
   }
 
  private:
-  Error at(int line, const std::string& message) const {
-    return Error{name_ + ": line " + std::to_string(line) + ": " + message};
-  }
+  Error at(int line, const std::string& message) const { return error_at(name_, line, message); }
 
   std::optional<Error> split_lines(std::string_view text) {
     int number = 0;
@@ -102,182 +46,6 @@ class BvhReader {
       const auto first = line.find_first_not_of(kSpaces);
       if (first == std::string_view::npos || line[first] == '#') continue;
       lines_.push_back({line, number});
-    }
-    return std::nullopt;
-  }
-
-  // Tokens of the lines before MOTION; motion_line_ is the index of the MOTION line in lines_
-  // (lines_.size() if there is none).
-  void tokenize_hierarchy() {
-    motion_line_ = lines_.size();
-    for (std::size_t l = 0; l < lines_.size(); ++l) {
-      std::string_view rest = lines_[l].text;
-      std::string_view first = next_token(rest);
-      if (first == "MOTION") {
-        motion_line_ = l;
-        return;
-      }
-      for (std::string_view t = first; !t.empty(); t = next_token(rest)) {
-        tokens_.push_back({t, lines_[l].number});
-      }
-    }
-  }
-
-  struct Open {
-    int joint;
-    int line;
-    std::string label;  // "JOINT LeftKnee", "End Site of LeftToe"
-  };
-
-  std::optional<Error> read_hierarchy() {
-    tokenize_hierarchy();
-    std::size_t pos = 0;
-    auto ends_early = [&](const std::vector<Open>& open) -> Error {
-      const std::string missing = open.empty()
-                                      ? "ROOT"
-                                      : "'}' to close " + open.back().label + " (opened on line " +
-                                            std::to_string(open.back().line) + ")";
-      if (motion_line_ < lines_.size()) {
-        return at(lines_[motion_line_].number, "MOTION comes before the expected " + missing);
-      }
-      return at(lines_.back().number, "the file ends before the expected " + missing);
-    };
-    if (tokens_.empty() || tokens_[0].text != "HIERARCHY") {
-      const int line = tokens_.empty() ? lines_[0].number : tokens_[0].line;
-      return at(line, "expected HIERARCHY, got " +
-                          quote_input(tokens_.empty() ? "MOTION" : tokens_[0].text));
-    }
-    ++pos;
-    std::vector<Open> open;
-    std::unordered_map<std::string_view, int> name_lines;
-    do {
-      if (pos == tokens_.size()) return ends_early(open);
-      const Token& token = tokens_[pos++];
-      if (open.empty()) {
-        if (token.text != "ROOT") {
-          return at(token.line, std::string(clip_.joint_count() == 0 ? "expected ROOT"
-                                                                     : "expected ROOT or MOTION") +
-                                    ", got " + quote_input(token.text));
-        }
-      }
-      if (token.text == "ROOT" || token.text == "JOINT") {
-        if (!open.empty() && token.text == "ROOT") {
-          return at(token.line, "ROOT inside " + open.back().label + "; children are JOINTs");
-        }
-        if (pos == tokens_.size() || tokens_[pos].line != token.line) {
-          return at(token.line, std::string(token.text) + " without a name");
-        }
-        const Token& name = tokens_[pos++];
-        const auto [it, inserted] = name_lines.emplace(name.text, name.line);
-        if (!inserted) {
-          return at(name.line, "a second joint is named " + quote_input(name.text) +
-                                   " (the first is on line " + std::to_string(it->second) + ")");
-        }
-        const std::string label = std::string(token.text) + " " + std::string(name.text);
-        if (auto error = open_joint(std::string(name.text), label, open, pos)) return error;
-      } else if (token.text == "End") {
-        if (pos == tokens_.size() || tokens_[pos].text != "Site") {
-          return at(token.line, "expected 'Site' after End");
-        }
-        ++pos;
-        const std::string label = "End Site of " + clip_.skeleton.names[open.back().joint];
-        if (auto error = open_joint("", label, open, pos)) return error;
-        clip_.end_sites.back() = true;
-      } else if (token.text == "}") {
-        open.pop_back();
-      } else {
-        return at(token.line, "unexpected " + quote_input(token.text) + " in " + open.back().label +
-                                  " (expected JOINT, End Site or '}')");
-      }
-    } while (!open.empty() || pos < tokens_.size());
-    if (motion_line_ == lines_.size()) {
-      return at(lines_.back().number, "the file ends before MOTION");
-    }
-    return std::nullopt;
-  }
-
-  // After "JOINT name": '{', OFFSET x y z, then (not for End Sites) CHANNELS n names...
-  std::optional<Error> open_joint(std::string name, const std::string& label,
-                                  std::vector<Open>& open, std::size_t& pos) {
-    const int line = tokens_[pos - 1].line;
-    if (pos == tokens_.size() || tokens_[pos].text != "{") {
-      return at(
-          pos == tokens_.size() ? line : tokens_[pos].line,
-          "expected '{' after " + label +
-              (pos == tokens_.size() ? std::string() : ", got " + quote_input(tokens_[pos].text)));
-    }
-    ++pos;
-    const int parent = open.empty() ? -1 : open.back().joint;
-    const int joint = clip_.skeleton.add_joint(std::move(name), parent, Vec3::Zero());
-    clip_.channels.emplace_back();
-    clip_.end_sites.push_back(false);
-    open.push_back({joint, line, label});
-    if (pos == tokens_.size() || tokens_[pos].text != "OFFSET") {
-      return at(
-          pos == tokens_.size() ? line : tokens_[pos].line,
-          "expected OFFSET in " + label +
-              (pos == tokens_.size() ? std::string() : ", got " + quote_input(tokens_[pos].text)));
-    }
-    const int offset_line = tokens_[pos++].line;
-    for (int axis = 0; axis < 3; ++axis) {
-      double value = 0.0;
-      if (pos == tokens_.size() || tokens_[pos].line != offset_line) {
-        return at(offset_line,
-                  "OFFSET of " + label + " needs 3 numbers, got " + std::to_string(axis));
-      }
-      const Token& t = tokens_[pos++];
-      const Number parsed = parse_number(t.text, value);
-      if (parsed != Number::ok) {
-        return at(t.line, "OFFSET of " + label + ": " + quote_input(t.text) +
-                              (parsed == Number::malformed ? " is not a number"
-                                                           : " is not a finite number"));
-      }
-      clip_.skeleton.rest_offsets[joint][axis] = value * scale_;
-    }
-    if (pos < tokens_.size() && tokens_[pos].line == offset_line) {
-      return at(offset_line, "OFFSET of " + label + " has more than 3 numbers");
-    }
-    if (label.starts_with("End Site")) return std::nullopt;
-    if (pos == tokens_.size() || tokens_[pos].text != "CHANNELS") {
-      return at(
-          pos == tokens_.size() ? offset_line : tokens_[pos].line,
-          "expected CHANNELS in " + label +
-              (pos == tokens_.size() ? std::string() : ", got " + quote_input(tokens_[pos].text)));
-    }
-    return read_channels(joint, label, pos);
-  }
-
-  std::optional<Error> read_channels(int joint, const std::string& label, std::size_t& pos) {
-    const int line = tokens_[pos++].line;
-    long count = 0;
-    if (pos == tokens_.size() || tokens_[pos].line != line ||
-        !parse_count(tokens_[pos].text, 6, count)) {
-      return at(line, "CHANNELS of " + label + " needs a count from 0 to 6" +
-                          (pos < tokens_.size() && tokens_[pos].line == line
-                               ? ", got " + quote_input(tokens_[pos].text)
-                               : std::string()));
-    }
-    ++pos;
-    std::size_t end = pos;
-    while (end < tokens_.size() && tokens_[end].line == line) ++end;
-    if (static_cast<long>(end - pos) != count) {
-      return at(line, "CHANNELS of " + label + " says " + std::to_string(count) + " but lists " +
-                          std::to_string(end - pos));
-    }
-    for (; pos < end; ++pos) {
-      BvhChannel channel{};
-      if (!parse_channel(tokens_[pos].text, channel)) {
-        return at(line, "unknown channel " + quote_input(tokens_[pos].text) + " in " + label +
-                            " (expected Xposition, Yposition, Zposition, Xrotation, Yrotation "
-                            "or Zrotation)");
-      }
-      auto& list = clip_.channels[joint];
-      for (BvhChannel c : list) {
-        if (c == channel) {
-          return at(line, label + " lists " + std::string(bvh_channel_name(c)) + " twice");
-        }
-      }
-      list.push_back(channel);
     }
     return std::nullopt;
   }
@@ -383,26 +151,9 @@ class BvhReader {
     return "?";
   }
 
-  // End Sites have no name in a file: "<parent>_End", numbered if a joint already has it.
-  void name_end_sites() {
-    std::unordered_map<std::string, int> taken;
-    for (const std::string& n : clip_.skeleton.names) {
-      if (!n.empty()) taken.emplace(n, 0);
-    }
-    for (int j = 0; j < clip_.joint_count(); ++j) {
-      if (!clip_.end_sites[j]) continue;
-      const std::string base = clip_.skeleton.names[clip_.skeleton.parents[j]] + "_End";
-      std::string name = base;
-      for (int k = 2; taken.contains(name); ++k) name = base + std::to_string(k);
-      taken.emplace(name, 0);
-      clip_.skeleton.names[j] = name;
-    }
-  }
-
   std::string name_;
   double scale_;
   std::vector<Line> lines_;
-  std::vector<Token> tokens_;
   std::size_t motion_line_ = 0;
   BvhClip clip_;
 };

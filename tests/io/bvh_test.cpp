@@ -188,6 +188,12 @@ TEST(Bvh, MalformedFilesEachGetOneClearError) {
             "bad.bvh: line 8: OFFSET of JOINT knee: 'nan' is not a finite number");
   EXPECT_EQ(error_of(small_file("\tJOINT hip\n\t{\n\t\tOFFSET 0 -1 0\n\t\tCHANNELS 0\n\t}\n")),
             "bad.bvh: line 6: a second joint is named 'hip' (the first is on line 2)");
+  EXPECT_EQ(error_of(small_file("\tJOINT knee\n\t{\n\t\tOFFSET 0 -1 0\n\t\tCHANNELS 0\n\t\tEnd "
+                                "Site\n\t\t{\n\t\t\tOFFSET 0 -1 0\n\t\t\tJOINT toe\n")),
+            "bad.bvh: line 13: unexpected 'JOINT' in End Site of knee (expected '}'; End Sites "
+            "have no children)");
+  EXPECT_EQ(error_of(small_file("\tJOINT kn\x1b[2Jee\n\t\tOFFSET 0 -1 0\n\t}\n")),
+            "bad.bvh: line 7: expected '{' after JOINT kn\\x1b[2Jee, got 'OFFSET'");
   // Truncated: the file stops inside the hierarchy, or inside the motion.
   const std::string whole = small_file();
   EXPECT_EQ(error_of(whole.substr(0, whole.find("\t\tEnd Site"))),
