@@ -94,14 +94,15 @@ class HierarchyReader {
           return at(name.line, "a second joint is named " + quote_input(name.text) +
                                    " (the first is on line " + std::to_string(it->second) + ")");
         }
-        const std::string label = std::string(token.text) + " " + std::string(name.text);
+        const std::string label = std::string(token.text) + " " + shown_name(name.text);
         if (auto error = open_joint(std::string(name.text), label, open, pos)) return error;
       } else if (token.text == "End") {
         if (pos == tokens_.size() || tokens_[pos].text != "Site") {
           return at(token.line, "expected 'Site' after End");
         }
         ++pos;
-        const std::string label = "End Site of " + clip_.skeleton.names[open.back().joint];
+        const std::string label =
+            "End Site of " + shown_name(clip_.skeleton.names[open.back().joint]);
         if (auto error = open_joint("", label, open, pos)) return error;
         clip_.end_sites.back() = true;
       } else if (token.text == "}") {

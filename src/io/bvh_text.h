@@ -69,6 +69,11 @@ inline bool parse_channel(std::string_view token, BvhChannel& channel) {
   return false;
 }
 
+/// A joint name as messages show it: cut after 64 bytes, so an error stays one short line.
+inline std::string shown_name(std::string_view name) {
+  return name.size() <= 64 ? std::string(name) : std::string(name.substr(0, 64)) + "...";
+}
+
 /// "NAME: line N: message", made safe to print (control bytes escaped, length capped).
 inline Error error_at(const std::string& file, int line, const std::string& message) {
   return Error{sanitize_message(file + ": line " + std::to_string(line) + ": " + message)};

@@ -81,6 +81,17 @@ TEST(Bvh, ReadsAnOddButValidClip) {
   EXPECT_DOUBLE_EQ(clip.motion(1, 7), 1e-3);
 }
 
+TEST(Bvh, ReadsAndWritesSeveralRootsAndJointsWithoutEndSites) {
+  const BvhClip clip = read_ok(
+      "HIERARCHY\nROOT a\n{\n OFFSET 1 2 3\n CHANNELS 4 Yrotation Xposition Zrotation Xrotation\n"
+      " JOINT b\n {\n  OFFSET 0 1 0\n  CHANNELS 1 Zposition\n }\n}\nROOT c\n{\n OFFSET 0 0 0\n"
+      " CHANNELS 0\n}\nMOTION\nFrames: 1\nFrame Time: 0.5\n10 1 90 -5 2\n");
+  EXPECT_EQ(clip.skeleton.parents, (std::vector<int>{-1, 0, -1}));
+  EXPECT_EQ(clip.end_sites, (std::vector<bool>{false, false, false}));
+  EXPECT_EQ(pose_of(clip, 0).global_positions[2], Vec3::Zero());
+  expect_same_clip(clip, read_ok(write_bvh(clip)));
+}
+
 TEST(Bvh, FramePoseComposesRotationsInChannelOrderAndReplacesOffsetsByPositions) {
   const BvhClip clip = read_ok(kOddClip);
   const SkeletonPose pose = pose_of(clip, 0);
