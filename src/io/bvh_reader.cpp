@@ -34,6 +34,8 @@ class BvhReader {
   Error at(int line, const std::string& message) const { return error_at(name_, line, message); }
 
   std::optional<Error> split_lines(std::string_view text) {
+    // A UTF-8 byte order mark (some Windows editors write one) is not part of the first line.
+    if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
     int number = 0;
     while (!text.empty()) {
       const std::size_t newline = text.find('\n');
