@@ -1,0 +1,80 @@
+#pragma once
+// What every IK solver on a skeleton tree shares (issue 12): effectors with their targets, the
+// joint limits the solver enforces inside its iterations, and the result. FABRIK for trees,
+// CCD over trees and damped least squares take the same arguments in the same order:
+//
+//   Result<TreeIkResult> solve_X(const Skeleton& skeleton, const TreeIkProblem& problem,
+//                                const XSettings& settings, XWorkspace& workspace,
+//                                SkeletonPose& pose);
+//
+// so the viewer and the CLI switch between them with TreeIkSolverKind. The pose is read as the
+// starting guess and overwritten with the solution (FK already run). Roots never move: their
+// local translations and rotations are kept; every other joint may turn (never translate).
+//
+// Joint limits apply to a joint's rotation relative to its rest rotation,
+//   q_rel = rest_rotations[i]^-1 * local_rotations[i]
+// (joint_limits.h), so a skeleton at rest is inside every limit that contains the identity.
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "animkit/core/result.h"
+#include "animkit/core/types.h"
+#include "animkit/kinematics/joint_limits.h"
+#include "animkit/kinematics/skeleton.h"
+
+namespace animkit {
+
+/// One end effector: a joint and where it should be.
+struct Effector {
+  int joint = -1;                ///< index of the joint in the skeleton; not a root
+  Vec3 position = Vec3::Zero();  ///< world space, scene units, finite
+  /// World orientation the joint should take (unit); none (the default): position only.
+  std::optional<Quat> orientation = std::nullopt;
+  double weight = 1.0;  ///< relative importance among effectors, finite, > 0
+};
+
+/// The inputs of a solve besides the pose.
+struct TreeIkProblem {
+  std::span<const Effector> effectors;  ///< at least one; joints distinct
+  /// One limit per joint (FreeJoint where none), or empty: every joint free.
+  std::span<const JointLimit> limits = {};
+};
+
+/// What a solve did.
+struct TreeIkResult {
+  int iterations = 0;  ///< full iterations run (a sweep, a FABRIK pass, a DLS step)
+  double error = 0.0;  ///< largest |effector joint - target position| (scene units)
+  /// Largest angle (rad) between an effector joint's orientation and its target, over the
+  /// effectors that have one (0 when none has).
+  double orientation_error = 0.0;
+  bool converged = false;  ///< error <= tolerance and orientation_error <= angular tolerance
+  /// False when some target lies farther from the nearest fixed root above its effector than
+  /// the bones between them reach.
+  bool reachable = true;
+};
+
+/// The first problem with a problem for this skeleton and pose: pose sizes, an effector on a
+/// root or out of range or repeated, a non-finite target, a non-unit orientation, a weight not
+/// > 0, a limits span of the wrong size or an invalid limit.
+std::optional<Error> validate_tree_ik(const Skeleton& skeleton, const TreeIkProblem& problem,
+                                      const SkeletonPose& pose);
+
+/// The position and orientation errors of `pose` (FK run) against the effectors:
+/// TreeIkResult::error and orientation_error.
+struct TreeIkErrors {
+  double position = 0.0;
+  double orientation = 0.0;
+};
+TreeIkErrors tree_ik_errors(const SkeletonPose& pose, std::span<const Effector> effectors);
+
+/// Whether every target is within reach (TreeIkResult::reachable).
+bool tree_ik_reachable(const Skeleton& skeleton, const SkeletonPose& pose,
+                       std::span<const Effector> effectors);
+
+/// Joint i's rotation relative to its rest rotation (what its limit constrains).
+inline Quat relative_to_rest(const Skeleton& skeleton, const SkeletonPose& pose, int joint) {
+  return skeleton.rest_rotations()[joint].conjugate() * pose.local_rotations[joint];
+}
+
+}  // namespace animkit

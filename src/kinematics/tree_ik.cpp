@@ -1,0 +1,101 @@
+#include "animkit/kinematics/tree_ik.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "animkit/core/validation.h"
+#include "animkit/kinematics/ik_types.h"
+
+namespace animkit {
+
+namespace {
+
+std::string effector_name(std::size_t e) {
+  return "effector " + std::to_string(e);
+}
+
+bool finite(const Vec3& v) {
+  return v.allFinite();
+}
+
+}  // namespace
+
+std::optional<Error> validate_tree_ik(const Skeleton& skeleton, const TreeIkProblem& problem,
+                                      const SkeletonPose& pose) {
+  const auto n = static_cast<std::size_t>(skeleton.joint_count());
+  if (pose.local_rotations.size() != n || pose.local_translations.size() != n ||
+      pose.global_rotations.size() != n || pose.global_positions.size() != n) {
+    return Error{"the pose has " + std::to_string(pose.local_rotations.size()) +
+                 " joints, the skeleton " + std::to_string(n)};
+  }
+  if (problem.effectors.empty()) return Error{"IK needs at least one effector"};
+  std::vector<char> taken(n, 0);
+  for (std::size_t e = 0; e < problem.effectors.size(); ++e) {
+    const Effector& effector = problem.effectors[e];
+    const std::string name = effector_name(e);
+    if (effector.joint < 0 || static_cast<std::size_t>(effector.joint) >= n) {
+      return Error{name + " names joint " + std::to_string(effector.joint) +
+                   ", the skeleton has joints 0 to " + std::to_string(n - 1)};
+    }
+    const std::string& joint = skeleton.names()[static_cast<std::size_t>(effector.joint)];
+    if (skeleton.parents()[static_cast<std::size_t>(effector.joint)] < 0)
+      return Error{name + " is on the root " + joint + ", which IK never moves"};
+    if (taken[static_cast<std::size_t>(effector.joint)])
+      return Error{name + ": joint " + joint + " has two effectors"};
+    taken[static_cast<std::size_t>(effector.joint)] = 1;
+    if (!finite(effector.position) ||
+        effector.position.cwiseAbs().maxCoeff() > kMaxTargetCoordinate)
+      return Error{name + " (" + joint + "): the target position must be finite and within 1e9"};
+    if (effector.orientation && !(effector.orientation->coeffs().allFinite() &&
+                                  std::abs(effector.orientation->norm() - 1.0) <= 1e-6)) {
+      return Error{name + " (" + joint + "): the target orientation must be a unit quaternion"};
+    }
+    if (!std::isfinite(effector.weight) || effector.weight <= 0.0) {
+      return Error{name + " (" + joint + "): the weight must be > 0, got " +
+                   format_number(effector.weight)};
+    }
+  }
+  if (!problem.limits.empty()) {
+    if (problem.limits.size() != n) {
+      return Error{"joint limits: " + std::to_string(problem.limits.size()) +
+                   " given, the skeleton has " + std::to_string(n) + " joints"};
+    }
+    for (std::size_t j = 0; j < n; ++j) {
+      if (auto error = validate(problem.limits[j]))
+        return Error{"joint " + skeleton.names()[j] + "'s limit: " + error->message};
+    }
+  }
+  return std::nullopt;
+}
+
+TreeIkErrors tree_ik_errors(const SkeletonPose& pose, std::span<const Effector> effectors) {
+  TreeIkErrors errors;
+  for (const Effector& e : effectors) {
+    const auto j = static_cast<std::size_t>(e.joint);
+    errors.position = std::max(errors.position, (pose.global_positions[j] - e.position).norm());
+    if (e.orientation) {
+      errors.orientation =
+          std::max(errors.orientation, pose.global_rotations[j].angularDistance(*e.orientation));
+    }
+  }
+  return errors;
+}
+
+bool tree_ik_reachable(const Skeleton& skeleton, const SkeletonPose& pose,
+                       std::span<const Effector> effectors) {
+  for (const Effector& e : effectors) {
+    // Up to the root: the bones between it and the effector, as the pose has them.
+    double reach = 0.0;
+    int j = e.joint;
+    while (skeleton.parents()[static_cast<std::size_t>(j)] >= 0) {
+      reach += pose.local_translations[static_cast<std::size_t>(j)].norm();
+      j = skeleton.parents()[static_cast<std::size_t>(j)];
+    }
+    if ((e.position - pose.global_positions[static_cast<std::size_t>(j)]).norm() > reach)
+      return false;
+  }
+  return true;
+}
+
+}  // namespace animkit
