@@ -11,7 +11,7 @@ SANITIZE_DIR := build/sanitize
 FUZZ_DIR     := build/fuzz
 FUZZ_SECONDS ?= 60
 
-.PHONY: deps fuzz-deps build demo viewer test test-release test-sanitize fuzz bench clean
+.PHONY: deps test-deps fuzz-deps build demo viewer test test-release test-sanitize fuzz bench clean
 
 deps:
 	bash scripts/install-deps.sh
@@ -31,7 +31,10 @@ viewer: deps
 	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target animkit-viewer
 	$(RELEASE_DIR)/apps/viewer/animkit-viewer
 
-test-release: deps
+test-deps:
+	bash scripts/install-deps.sh --tests
+
+test-release: deps test-deps
 	$(CMAKE) -S . -B $(RELEASE_DIR) -DCMAKE_BUILD_TYPE=Release
 	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS)
 	cd $(RELEASE_DIR) && ctest --output-on-failure -j $(JOBS)

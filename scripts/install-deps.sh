@@ -28,6 +28,11 @@ packages=(
   # point of comparison. The library itself uses neither.
   libcgal-dev libbullet-dev
 )
+if [ "${1:-}" = "--tests" ]; then
+  # The tests only: Blender (Debian's 3.4, the version the README's Blender steps use) opens the
+  # BVH files animkit writes and compares them with what animkit computed.
+  packages=(blender)
+fi
 if [ "${1:-}" = "--fuzz" ]; then
   # libomp: clang's OpenMP runtime, for the cloth solvers' threads in the fuzz build.
   packages=(clang-16 libclang-rt-16-dev libomp-16-dev)

@@ -16,7 +16,7 @@
 namespace animkit {
 namespace {
 
-// The CMU walk (tests/CMakeLists.txt: ANIMKIT_TEST_DATA_DIR); tests that need it skip without.
+// The CMU walk (data/cmu in the repository; tests/CMakeLists.txt: ANIMKIT_TEST_DATA_DIR).
 const std::filesystem::path kWalk = ANIMKIT_TEST_DATA_DIR "/cmu/131_01.bvh";
 
 // Unusual on purpose: comments, tabs, CRLF, blank lines, a position channel on a non-root
@@ -288,7 +288,7 @@ std::vector<Eigen::Vector3d> raw_positions(const std::string& text, int frame) {
 }
 
 TEST(Bvh, WalkForwardKinematicsMatchesAnIndependentEvaluation) {
-  if (!std::filesystem::exists(kWalk)) GTEST_SKIP() << kWalk << " not found";
+  ASSERT_TRUE(std::filesystem::exists(kWalk)) << kWalk << " not found";
   const auto clip = read_bvh_file(kWalk);
   ASSERT_TRUE(clip) << clip.error().message;
   EXPECT_EQ(clip->frame_count(), 994);
@@ -310,7 +310,7 @@ TEST(Bvh, WalkForwardKinematicsMatchesAnIndependentEvaluation) {
 }
 
 TEST(Bvh, WalkWrittenToAFileAndReadBackIsTheSame) {
-  if (!std::filesystem::exists(kWalk)) GTEST_SKIP() << kWalk << " not found";
+  ASSERT_TRUE(std::filesystem::exists(kWalk)) << kWalk << " not found";
   const BvhClip clip = *read_bvh_file(kWalk, {.scale = 0.056444});
   const auto path = testing_support::fresh_dir("bvh_walk") / "walk.bvh";
   ASSERT_TRUE(write_bvh_file(path, clip));
@@ -320,7 +320,7 @@ TEST(Bvh, WalkWrittenToAFileAndReadBackIsTheSame) {
 }
 
 TEST(Bvh, WalkPosesSetAsFramesKeepTheirPositions) {
-  if (!std::filesystem::exists(kWalk)) GTEST_SKIP() << kWalk << " not found";
+  ASSERT_TRUE(std::filesystem::exists(kWalk)) << kWalk << " not found";
   BvhClip clip = *read_bvh_file(kWalk);
   for (const int frame : {0, 400, 993}) {
     const SkeletonPose before = pose_of(clip, frame);
