@@ -11,10 +11,11 @@
 
 #include "animkit/core/quote.h"
 #include "animkit/io/bvh.h"
+#include "text_lines.h"
 
 namespace animkit::bvh_detail {
 
-inline constexpr std::string_view kSpaces = " \t\r\v\f";
+inline constexpr std::string_view kSpaces = kTokenSpaces;
 
 /// A line that is neither blank nor a '#' comment.
 struct Line {
@@ -26,20 +27,6 @@ struct Token {
   std::string_view text;
   int line;
 };
-
-// The next whitespace-separated token of `line`, removed from it (empty at the end).
-inline std::string_view next_token(std::string_view& line) {
-  const auto first = line.find_first_not_of(kSpaces);
-  if (first == std::string_view::npos) {
-    line = {};
-    return {};
-  }
-  line.remove_prefix(first);
-  const auto end = line.find_first_of(kSpaces);
-  const std::string_view token = line.substr(0, end);
-  line.remove_prefix(end == std::string_view::npos ? line.size() : end);
-  return token;
-}
 
 enum class Number { ok, malformed, not_finite };
 

@@ -236,12 +236,9 @@ Result<ClothWorldDesc> parse_cloth_scene(std::string_view text, std::string_view
                                          const std::filesystem::path& folder) {
   const std::string prefix = std::string(name) + ": ";
   const HeldFloatingPointExceptions held;  // huge numbers parse to infinity, refused below
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {  // syntax, or a number beyond a double
-    return fail(prefix + "not valid JSON (" + sanitize_message(e.what(), 300) + ")");
-  }
+  auto parsed = parse_json_document(text, prefix);
+  if (!parsed) return fail(parsed.error().message);
+  const nlohmann::json& document = *parsed;
   ClothWorldDesc desc;
   try {
     desc = SceneReader(folder).read(document);

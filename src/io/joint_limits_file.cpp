@@ -140,12 +140,9 @@ class LimitReader {
 Result<JointLimitSet> read_joint_limits(std::string_view text, std::string_view source_name) {
   const std::string prefix = std::string(source_name) + ": ";
   const HeldFloatingPointExceptions held;  // huge numbers parse to infinity, refused below
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {  // syntax, or a number beyond a double
-    return fail(prefix + "not valid JSON (" + sanitize_message(e.what(), 300) + ")");
-  }
+  auto parsed = parse_json_document(text, prefix);
+  if (!parsed) return fail(parsed.error().message);
+  const nlohmann::json& document = *parsed;
   if (!document.is_object()) {
     return fail(prefix + "expected an object keyed by joint name {\"LeftKnee\": {...}}");
   }

@@ -130,4 +130,12 @@ std::string element_path(const std::string& array_path, std::size_t index) {
   return array_path + "[" + std::to_string(index) + "]";
 }
 
+Result<nlohmann::json> parse_json_document(std::string_view text, const std::string& prefix) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {  // syntax, or a number beyond a double
+    return fail(prefix + "not valid JSON (" + sanitize_message(e.what(), 300) + ")");
+  }
+}
+
 }  // namespace animkit

@@ -8,7 +8,9 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
+#include "animkit/core/result.h"
 #include "animkit/core/types.h"
 
 namespace animkit {
@@ -48,6 +50,12 @@ class JsonFields {
   std::string path_;
   std::set<std::string> asked_;  // every key a reader asked for, present or not
 };
+
+/// The JSON document in `text`, or an error starting with `prefix` ("scene.json: ") that says
+/// it is not valid JSON and why (the parser's message, cut to 300 characters). Callers hold
+/// HeldFloatingPointExceptions around the parse and their reading: a number beyond a double
+/// parses to infinity, which their readers refuse.
+Result<nlohmann::json> parse_json_document(std::string_view text, const std::string& prefix);
 
 /// The element path "colliders[2]".
 std::string element_path(const std::string& array_path, std::size_t index);

@@ -16,22 +16,6 @@ namespace animkit {
 
 namespace {
 
-constexpr std::string_view kSpaces = " \t\r";
-
-// The next whitespace-separated token of `line`, removed from it (empty at the end).
-std::string_view next_token(std::string_view& line) {
-  const auto first = line.find_first_not_of(kSpaces);
-  if (first == std::string_view::npos) {
-    line = {};
-    return {};
-  }
-  line.remove_prefix(first);
-  const auto end = line.find_first_of(kSpaces);
-  const std::string_view token = line.substr(0, end);
-  line.remove_prefix(end == std::string_view::npos ? line.size() : end);
-  return token;
-}
-
 // All of `token` as strtod reads it ("1e-3", "+2", "nan", "inf"). Copied: strtod needs a NUL.
 bool parse_number(std::string_view token, double& value) {
   const std::string owned(token);

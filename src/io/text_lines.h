@@ -1,7 +1,8 @@
 #pragma once
 // Line by line through a text file held in memory, for the line-based readers (CSV curves, OBJ
-// meshes): each line with the "FILE line N" its messages start with, and a NUL byte refused
-// rather than read as the end of the line (it would hide what follows it).
+// meshes, BVH): each line with the "FILE line N" its messages start with, and a NUL byte
+// refused rather than read as the end of the line (it would hide what follows it); and token
+// by token through a line.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -10,6 +11,23 @@
 #include "animkit/core/result.h"
 
 namespace animkit {
+
+/// What separates tokens on a line (a '\r' of a CRLF line end included).
+inline constexpr std::string_view kTokenSpaces = " \t\r\v\f";
+
+/// The next whitespace-separated token of `line`, removed from it (empty at the end).
+inline std::string_view next_token(std::string_view& line) {
+  const auto first = line.find_first_not_of(kTokenSpaces);
+  if (first == std::string_view::npos) {
+    line = {};
+    return {};
+  }
+  line.remove_prefix(first);
+  const auto end = line.find_first_of(kTokenSpaces);
+  const std::string_view token = line.substr(0, end);
+  line.remove_prefix(end == std::string_view::npos ? line.size() : end);
+  return token;
+}
 
 class TextLines {
  public:
