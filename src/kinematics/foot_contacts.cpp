@@ -68,6 +68,10 @@ std::optional<Error> FootLockSettings::validate() const {
     return Error{"foot lock minimum contact length must be >= 1 frame, got " +
                  std::to_string(min_contact_frames)};
   }
+  if (merge_gap_frames < 0) {
+    return Error{"foot lock gap to merge must be >= 0 frames, got " +
+                 std::to_string(merge_gap_frames)};
+  }
   if (blend_frames < 0) {
     return Error{"foot lock blend must be >= 0 frames, got " + std::to_string(blend_frames)};
   }
@@ -110,6 +114,14 @@ FootContacts detect_foot_contacts(const std::vector<Vec3>& ankle, double frame_t
     const double speed = b > a ? (ankle[b] - ankle[a]).norm() / ((b - a) * frame_time) : 0.0;
     const double height = ankle[f].y() - ground_height;
     c.planted[f] = height <= settings.height_threshold && speed <= settings.speed_threshold;
+  }
+  // Short gaps between planted runs are filled: one contact, one lock.
+  for (int f = 0, last_planted = -1; f < n; ++f) {
+    if (!c.planted[f]) continue;
+    if (last_planted >= 0 && f - last_planted - 1 <= settings.merge_gap_frames) {
+      std::fill(c.planted.begin() + last_planted + 1, c.planted.begin() + f, 1);
+    }
+    last_planted = f;
   }
   // Runs long enough to be steps become spans, locked at the run's mean ankle position.
   for (int f = 0; f < n;) {

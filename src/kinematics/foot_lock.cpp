@@ -42,6 +42,17 @@ void size_workspace(const Skeleton& skeleton, FootLockWorkspace& ws) {
   ws.previous_positions.resize(skeleton.joint_count());
 }
 
+// Joints whose position the lock can change: a knee moves when its hip turns, so the knees and
+// everything below them (parents come first, so one pass marks whole subtrees).
+void mark_legs(const Skeleton& skeleton, const BipedLegs& legs, std::vector<std::uint8_t>& in_leg) {
+  in_leg.assign(skeleton.joint_count(), 0);
+  for (const LegJoints& leg : legs) in_leg[leg.knee] = 1;
+  for (int j = 0; j < skeleton.joint_count(); ++j) {
+    const int p = skeleton.parents()[j];
+    if (p >= 0 && in_leg[p]) in_leg[j] = 1;
+  }
+}
+
 // Forward of the pelvis from the hips: (left - right) x up, so a body whose left is +X faces +Z.
 Vec3 pelvis_forward(const SkeletonPose& pose, const BipedLegs& legs) {
   const Vec3 across = pose.global_positions[legs[0].hip] - pose.global_positions[legs[1].hip];
@@ -50,14 +61,20 @@ Vec3 pelvis_forward(const SkeletonPose& pose, const BipedLegs& legs) {
   return n > 0.0 ? Vec3(forward / n) : Vec3::UnitZ();
 }
 
-// Largest joint move from the previous frame's positions, which it then replaces.
-double joint_step(const SkeletonPose& pose, std::vector<Vec3>& previous, bool first) {
-  double step = 0.0;
-  for (std::size_t j = 0; j < previous.size(); ++j) {
-    if (!first) step = std::max(step, (pose.global_positions[j] - previous[j]).norm());
-    previous[j] = pose.global_positions[j];
+// Largest joint moves (all joints, leg joints) from the previous frame's positions, which
+// then become this frame's.
+struct Steps {
+  double all = 0.0, legs = 0.0;
+};
+void joint_step(const SkeletonPose& pose, FootLockWorkspace& ws, bool first, Steps& steps) {
+  for (std::size_t j = 0; j < ws.previous_positions.size(); ++j) {
+    if (!first) {
+      const double step = (pose.global_positions[j] - ws.previous_positions[j]).norm();
+      steps.all = std::max(steps.all, step);
+      if (ws.in_leg[j]) steps.legs = std::max(steps.legs, step);
+    }
+    ws.previous_positions[j] = pose.global_positions[j];
   }
-  return step;
 }
 
 // Stage 1: the original ankle trails, the lowest ankle height and the largest joint step.
@@ -66,7 +83,8 @@ double measure_original(const Skeleton& skeleton, const BipedLegs& legs,
                         FootLockResult& result) {
   const int frames = motion.frame_count();
   result.ankles_before.resize(static_cast<std::size_t>(frames) * 2);
-  double ground = std::numeric_limits<double>::max(), step = 0.0;
+  double ground = std::numeric_limits<double>::max();
+  Steps steps;
   for (int f = 0; f < frames; ++f) {
     motion.read_frame(f, ws.pose);
     skeleton_forward_kinematics(skeleton, ws.pose);
@@ -75,9 +93,10 @@ double measure_original(const Skeleton& skeleton, const BipedLegs& legs,
       result.ankles_before[f * 2 + leg] = a;
       ground = std::min(ground, a.y());
     }
-    step = std::max(step, joint_step(ws.pose, ws.previous_positions, f == 0));
+    joint_step(ws.pose, ws, f == 0, steps);
   }
-  result.metrics.max_joint_step_before_cm = step * kCentimetresPerMetre;
+  result.metrics.max_joint_step_before_cm = steps.all * kCentimetresPerMetre;
+  result.metrics.max_leg_step_before_cm = steps.legs * kCentimetresPerMetre;
   return ground;
 }
 
@@ -164,6 +183,7 @@ Result<FootLockResult> lock_feet(const Skeleton& skeleton, const BipedLegs& legs
   if (auto error = check_motion(skeleton, input)) return fail(error->message);
   const auto start = std::chrono::steady_clock::now();
   size_workspace(skeleton, ws);
+  mark_legs(skeleton, legs, ws.in_leg);
   FootLockResult result;
   FootLockMetrics& m = result.metrics;
   const int frames = input.frame_count();
@@ -183,7 +203,8 @@ Result<FootLockResult> lock_feet(const Skeleton& skeleton, const BipedLegs& legs
   output.local_rotations = input.local_rotations;
   output.local_translations = input.local_translations;
   result.ankles_after.resize(result.ankles_before.size());
-  double error_sum = 0.0, step = 0.0;
+  double error_sum = 0.0;
+  Steps steps;
   int solves = 0;
   for (int f = 0; f < frames; ++f) {
     input.read_frame(f, ws.pose);
@@ -208,9 +229,10 @@ Result<FootLockResult> lock_feet(const Skeleton& skeleton, const BipedLegs& legs
     for (int leg = 0; leg < 2; ++leg) {
       result.ankles_after[f * 2 + leg] = ws.pose.global_positions[legs[leg].ankle];
     }
-    step = std::max(step, joint_step(ws.pose, ws.previous_positions, f == 0));
+    joint_step(ws.pose, ws, f == 0, steps);
   }
-  m.max_joint_step_after_cm = step * kCentimetresPerMetre;
+  m.max_joint_step_after_cm = steps.all * kCentimetresPerMetre;
+  m.max_leg_step_after_cm = steps.legs * kCentimetresPerMetre;
   if (solves > 0) m.ik_error_mean_cm = error_sum / solves * kCentimetresPerMetre;
   measure_sliding(result, m.slide_before_mean_cm, m.slide_before_max_cm, m.slide_after_mean_cm,
                   m.slide_after_max_cm);

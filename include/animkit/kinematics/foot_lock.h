@@ -52,6 +52,10 @@ struct FootLockSettings {
   /// Planted runs shorter than this many frames are ignored (noise, not a step). >= 1;
   /// default 6 (50 ms at 120 fps).
   int min_contact_frames = 6;
+  /// Planted runs separated by at most this many frames are one contact (a one-frame flicker
+  /// over a threshold would otherwise split a step into two locks at different places).
+  /// >= 0; default 3.
+  int merge_gap_frames = 3;
   /// Frames before and after each contact over which the lock weight rises from 0 to 1 (and
   /// falls back), by smoothstep. >= 0; default 10. 0 snaps the foot (a visible pop).
   int blend_frames = 10;
@@ -108,6 +112,8 @@ struct FootLockMetrics {
   double ik_error_mean_cm = 0.0, ik_error_max_cm = 0.0;
   /// Largest move of any joint between consecutive frames, cm.
   double max_joint_step_before_cm = 0.0, max_joint_step_after_cm = 0.0;
+  /// The same over the joints the lock can move (knees, ankles and below): a pop shows here.
+  double max_leg_step_before_cm = 0.0, max_leg_step_after_cm = 0.0;
   double ms_per_frame = 0.0;  ///< wall time of the lock (detection, solves, metrics) per frame
 };
 
@@ -123,6 +129,7 @@ struct FootLockResult {
 struct FootLockWorkspace {
   SkeletonPose pose;
   std::vector<Vec3> previous_positions;
+  std::vector<std::uint8_t> in_leg;  ///< per joint: 1 for a knee, an ankle or below them
 };
 
 /// Locks the feet of `input` (a motion of `skeleton`) into `output` (resized to match; frames
