@@ -43,8 +43,8 @@ void scale_bvh_clip(BvhClip& clip, double factor) {
   int column = 0;
   for (const auto& channels : clip.channels) {
     for (BvhChannel c : channels) {
-      const bool position = c == BvhChannel::x_position || c == BvhChannel::y_position ||
-                            c == BvhChannel::z_position;
+      const bool position =
+          c == BvhChannel::x_position || c == BvhChannel::y_position || c == BvhChannel::z_position;
       if (position) clip.motion.col(column) *= factor;
       ++column;
     }

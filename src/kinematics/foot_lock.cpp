@@ -194,8 +194,8 @@ Result<FootLockResult> lock_feet(const Skeleton& skeleton, const BipedLegs& legs
     for (int f = 0; f < frames; ++f) trail[f] = result.ankles_before[f * 2 + leg];
     result.contacts[leg] = detect_foot_contacts(trail, input.frame_time, ground, settings);
     m.contacts[leg] = static_cast<int>(result.contacts[leg].spans.size());
-    m.planted_frames[leg] = static_cast<int>(std::count(
-        result.contacts[leg].planted.begin(), result.contacts[leg].planted.end(), 1));
+    m.planted_frames[leg] = static_cast<int>(
+        std::count(result.contacts[leg].planted.begin(), result.contacts[leg].planted.end(), 1));
   }
 
   output.joint_count = input.joint_count;

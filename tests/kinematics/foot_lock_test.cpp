@@ -1,9 +1,11 @@
-// Foot locking (issue 12) on the CMU walk 131_01 and on hand-made trails.
+// Foot locking (issue 12): settings, contact detection on made-up trails, and the lock on the
+// CMU walk 131_01 (skipped when the data is absent).
 #pragma GCC diagnostic ignored "-Wuninitialized"  // GCC 12 AVX-512 false positive (dense Eigen)
 #include "animkit/kinematics/foot_lock.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -15,6 +17,115 @@ namespace {
 
 const std::filesystem::path kWalk = ANIMKIT_TEST_DATA_DIR "/cmu/131_01.bvh";
 constexpr double kCmuMetresPerUnit = 0.056444;
+
+TEST(FootLockSettings, DefaultsAreValidAndErrorsNameTheField) {
+  EXPECT_FALSE(FootLockSettings{}.validate());
+  FootLockSettings s;
+  s.height_threshold = -1;
+  EXPECT_EQ(s.validate()->message, "foot lock height threshold must be > 0, got -1");
+  s = {};
+  s.speed_threshold = 0;
+  EXPECT_EQ(s.validate()->message, "foot lock speed threshold must be > 0, got 0");
+  s = {};
+  s.min_contact_frames = 0;
+  EXPECT_EQ(s.validate()->message, "foot lock minimum contact length must be >= 1 frame, got 0");
+  s = {};
+  s.merge_gap_frames = -2;
+  EXPECT_EQ(s.validate()->message, "foot lock gap to merge must be >= 0 frames, got -2");
+  s = {};
+  s.blend_frames = -1;
+  EXPECT_EQ(s.validate()->message, "foot lock blend must be >= 0 frames, got -1");
+  s = {};
+  s.max_knee_flexion = 4;
+  EXPECT_EQ(s.validate()->message,
+            "foot lock knee flexion range must satisfy 0 <= min < max <= pi radians, got [0, 4]");
+}
+
+TEST(FootLockSettings, KneePoleNamesRoundTrip) {
+  for (KneePole p : {KneePole::pelvis_forward, KneePole::original}) {
+    EXPECT_EQ(parse_knee_pole(to_string(p)), p);
+  }
+  EXPECT_FALSE(parse_knee_pole("backward"));
+}
+
+TEST(FootContacts, SmoothstepIsFlatAtBothEnds) {
+  EXPECT_EQ(smoothstep(-1), 0.0);
+  EXPECT_EQ(smoothstep(0), 0.0);
+  EXPECT_EQ(smoothstep(0.5), 0.5);
+  EXPECT_EQ(smoothstep(1), 1.0);
+  EXPECT_EQ(smoothstep(2), 1.0);
+  EXPECT_NEAR(smoothstep(1e-4) / 1e-4, 0.0, 1e-3);  // slope ~ 6t near 0
+}
+
+// At 10 fps: still on the ground for frames 0..19, a 1 m stride in the air for 20..29, still
+// again for 30..49.
+std::vector<Vec3> made_up_trail() {
+  std::vector<Vec3> trail;
+  for (int f = 0; f < 20; ++f) trail.emplace_back(0, 0.1, 0);
+  for (int f = 0; f < 10; ++f) trail.emplace_back(0.1 * (f + 1), 0.3, 0);
+  for (int f = 0; f < 20; ++f) trail.emplace_back(1.0, 0.1, 0);
+  return trail;
+}
+
+TEST(FootContacts, FindsLowSlowRunsAndRampsTheWeights) {
+  FootLockSettings s;
+  s.blend_frames = 3;
+  const FootContacts c = detect_foot_contacts(made_up_trail(), 0.1, 0.1, s);
+  ASSERT_EQ(c.spans.size(), 2u);
+  // Frame 19's central speed is |p20 - p18| / 0.2 s = 1.1 m/s (> 0.35): the first span ends at
+  // 18; frame 30's is 1 m/s, so the second starts at 31.
+  EXPECT_EQ(c.spans[0].first, 0);
+  EXPECT_EQ(c.spans[0].last, 18);
+  EXPECT_EQ(c.spans[1].first, 31);
+  EXPECT_EQ(c.spans[1].last, 49);
+  EXPECT_TRUE(c.spans[0].lock.isApprox(Vec3(0, 0.1, 0)));
+  EXPECT_TRUE(c.spans[1].lock.isApprox(Vec3(1, 0.1, 0)));
+  EXPECT_EQ(c.weight[18], 1.0);
+  EXPECT_EQ(c.weight[19], smoothstep(0.75));
+  EXPECT_EQ(c.weight[21], smoothstep(0.25));
+  EXPECT_EQ(c.weight[22], 0.0);
+  EXPECT_EQ(c.span_of[22], -1);
+  EXPECT_EQ(c.span_of[28], 1);
+  EXPECT_EQ(c.weight[28], smoothstep(0.25));
+  EXPECT_EQ(c.weight[27], 0.0);
+  EXPECT_EQ(c.planted[25], 0);
+}
+
+TEST(FootContacts, ShortRunsAreDroppedAndShortGapsMerged) {
+  std::vector<Vec3> trail(30, Vec3(0, 0.1, 0));
+  trail[10].y() = 0.5;  // one frame up: a gap of 3 frames (its neighbours move fast)
+  FootLockSettings s;
+  EXPECT_EQ(detect_foot_contacts(trail, 0.1, 0.1, s).spans.size(), 1u);
+  s.merge_gap_frames = 0;
+  const FootContacts split = detect_foot_contacts(trail, 0.1, 0.1, s);
+  ASSERT_EQ(split.spans.size(), 2u);
+  EXPECT_EQ(split.spans[0].last, 8);
+  s.min_contact_frames = 12;  // the first run (9 frames) is too short now
+  const FootContacts one = detect_foot_contacts(trail, 0.1, 0.1, s);
+  ASSERT_EQ(one.spans.size(), 1u);
+  EXPECT_EQ(one.spans[0].first, 12);
+  EXPECT_EQ(one.planted[3], 0);
+}
+
+TEST(FootLock, MissingLegJointsAreNamed) {
+  SkeletonDesc d;
+  d.add_joint("Hips", -1, Vec3::Zero());
+  d.add_joint("LeftHip", 0, Vec3(0.1, 0, 0));
+  d.add_joint("LeftKnee", 1, Vec3(0, -0.4, 0));
+  const auto skeleton = build_skeleton(d);
+  ASSERT_TRUE(skeleton);
+  EXPECT_EQ(find_biped_legs(*skeleton).error().message, "foot lock needs a joint named LeftAnkle");
+  d.add_joint("LeftAnkle", 0, Vec3(0, -0.4, 0));
+  EXPECT_EQ(find_biped_legs(*build_skeleton(d)).error().message,
+            "foot lock needs LeftKnee to be the parent of LeftAnkle");
+}
+
+TEST(FootLock, KneeFlexionIsSignedByTheForwardSide) {
+  const Vec3 hip(0, 1, 0), ankle(0, 0, 0);
+  EXPECT_NEAR(knee_flexion(hip, Vec3(0, 0.5, 0.5), ankle, Vec3::UnitZ()), M_PI / 2, 1e-12);
+  EXPECT_NEAR(knee_flexion(hip, Vec3(0, 0.5, -0.5), ankle, Vec3::UnitZ()), -M_PI / 2, 1e-12);
+  EXPECT_NEAR(knee_flexion(hip, Vec3(0, 0.5, 0), ankle, Vec3::UnitZ()), 0.0, 1e-12);
+}
 
 struct Walk {
   Skeleton skeleton;
@@ -37,32 +148,136 @@ const Walk* walk() {
   return loaded ? &*loaded : nullptr;
 }
 
-#define REQUIRE_WALK()                                        \
-  const Walk* w = walk();                                     \
-  if (w == nullptr) GTEST_SKIP() << kWalk << " is not here"
+// Every frame's posed skeleton (globals filled).
+std::vector<SkeletonPose> pose_all(const Skeleton& skeleton, const SkeletalMotion& motion) {
+  std::vector<SkeletonPose> poses(motion.frame_count(), skeleton_rest_pose(skeleton));
+  for (int f = 0; f < motion.frame_count(); ++f) {
+    motion.read_frame(f, poses[f]);
+    skeleton_forward_kinematics(skeleton, poses[f]);
+  }
+  return poses;
+}
 
-TEST(FootLockWalk, Diagnostics) {
-  REQUIRE_WALK();
+class FootLockWalk : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    w = walk();
+    if (w == nullptr) GTEST_SKIP() << kWalk << " is not here";
+    auto r = lock_feet(w->skeleton, w->legs, w->motion, settings, ws, locked);
+    ASSERT_TRUE(r) << r.error().message;
+    result = std::move(*r);
+    before = pose_all(w->skeleton, w->motion);
+    after = pose_all(w->skeleton, locked);
+  }
+  const Walk* w = nullptr;
+  FootLockSettings settings;
   FootLockWorkspace ws;
-  SkeletalMotion out;
-  const auto r = lock_feet(w->skeleton, w->legs, w->motion, {}, ws, out);
-  ASSERT_TRUE(r) << r.error().message;
-  const auto& m = r->metrics;
+  SkeletalMotion locked;
+  FootLockResult result;
+  std::vector<SkeletonPose> before, after;
+};
+
+TEST_F(FootLockWalk, FindsEachStepOfBothFeet) {
+  // "Start Walk Stop": standing, four strides, standing. Reading the ankle trails (height and
+  // XZ per 10 frames), each foot rests 8 times: the start stance, the steps, small shuffles
+  // while stopping (e.g. the right foot's 355..402 and 412..440 are two placements 4 cm apart)
+  // and the final stance.
+  EXPECT_EQ(result.metrics.contacts[0], 8);
+  EXPECT_EQ(result.metrics.contacts[1], 8);
   for (int leg = 0; leg < 2; ++leg) {
-    std::printf("leg %d: %d spans:", leg, m.contacts[leg]);
-    for (const auto& s : r->contacts[leg].spans) std::printf(" [%d,%d]", s.first, s.last);
-    std::printf("\n");
+    for (const FootContactSpan& s : result.contacts[leg].spans) {
+      EXPECT_GE(s.last - s.first + 1, settings.min_contact_frames);
+    }
   }
-  std::printf("slide before %.3f/%.3f after %.3f/%.3f ik %.3f/%.3f step %.3f %.3f ms %.4f\n",
-              m.slide_before_mean_cm, m.slide_before_max_cm, m.slide_after_mean_cm,
-              m.slide_after_max_cm, m.ik_error_mean_cm, m.ik_error_max_cm,
-              m.max_joint_step_before_cm, m.max_joint_step_after_cm, m.ms_per_frame);
-  for (int f = 0; f < w->motion.frame_count(); f += 10) {
-    std::printf("%d L %.3f %.3f %.3f R %.3f %.3f %.3f\n", f, r->ankles_before[f * 2].x(),
-                r->ankles_before[f * 2].y(), r->ankles_before[f * 2].z(),
-                r->ankles_before[f * 2 + 1].x(), r->ankles_before[f * 2 + 1].y(),
-                r->ankles_before[f * 2 + 1].z());
+}
+
+TEST_F(FootLockWalk, PlantedFeetSlideLessThanHalfACentimetrePerFrame) {
+  const FootLockMetrics& m = result.metrics;
+  std::printf(
+      "sliding per planted frame, cm: before mean %.4f max %.4f, after mean %.4f max %.4f\n",
+      m.slide_before_mean_cm, m.slide_before_max_cm, m.slide_after_mean_cm, m.slide_after_max_cm);
+  EXPECT_LT(m.slide_after_mean_cm, 0.5);
+  // The max too: inside a span the ankle sits on its lock up to the IK error, and the only
+  // misses are frames where the knee range or the leg's reach clamps the target.
+  EXPECT_LT(m.slide_after_max_cm, 0.5);
+  EXPECT_LT(m.slide_after_mean_cm, m.slide_before_mean_cm / 10);
+}
+
+TEST_F(FootLockWalk, FramesWithoutWeightAreUnchangedAndBlendsMoveTheAnkleByTheWeight) {
+  int untouched = 0, blended = 0;
+  for (int f = 0; f < w->motion.frame_count(); ++f) {
+    const double wl = result.contacts[0].weight[f], wr = result.contacts[1].weight[f];
+    for (int j = 0; j < w->skeleton.joint_count(); ++j) {
+      const bool leg_joint = ws.in_leg[j] != 0;
+      if ((wl == 0.0 && wr == 0.0) || !leg_joint) {
+        ASSERT_LE((after[f].global_positions[j] - before[f].global_positions[j]).norm(), 1e-9)
+            << "frame " << f << " joint " << w->skeleton.names()[j];
+      }
+    }
+    if (wl == 0.0 && wr == 0.0) ++untouched;
+    for (int leg = 0; leg < 2; ++leg) {
+      const FootContacts& c = result.contacts[leg];
+      if (c.weight[f] <= 0.0 || c.weight[f] >= 1.0) continue;
+      ++blended;
+      const int ankle = w->legs[leg].ankle;
+      const Vec3 lock = c.spans[c.span_of[f]].lock, a0 = before[f].global_positions[ankle];
+      // The ankle moves toward the lock by the weight's share of the way, no more.
+      EXPECT_LE((after[f].global_positions[ankle] - a0).norm(),
+                c.weight[f] * (lock - a0).norm() + 1e-9)
+          << "frame " << f << " leg " << leg;
+    }
   }
+  EXPECT_GT(untouched, 50);
+  EXPECT_GT(blended, 100);
+}
+
+TEST_F(FootLockWalk, KeepsBonesAnkleOrientationAndKneeRange) {
+  for (int f = 0; f < w->motion.frame_count(); ++f) {
+    const auto& p0 = before[f].global_positions;
+    const auto& p1 = after[f].global_positions;
+    for (int j = 0; j < w->skeleton.joint_count(); ++j) {
+      const int parent = w->skeleton.parents()[j];
+      if (parent < 0) continue;
+      ASSERT_NEAR((p1[j] - p1[parent]).norm(), (p0[j] - p0[parent]).norm(), 1e-9);
+    }
+    const Vec3 forward = (p1[w->legs[0].hip] - p1[w->legs[1].hip]).cross(Vec3::UnitY());
+    for (int leg = 0; leg < 2; ++leg) {
+      const LegJoints& l = w->legs[leg];
+      ASSERT_LT(
+          after[f].global_rotations[l.ankle].angularDistance(before[f].global_rotations[l.ankle]),
+          1e-9);
+      if (result.contacts[leg].weight[f] < 1.0) continue;
+      const double flexion = knee_flexion(p1[l.hip], p1[l.knee], p1[l.ankle], forward);
+      ASSERT_GE(flexion, settings.min_knee_flexion - 1e-9) << "frame " << f << " leg " << leg;
+      ASSERT_LE(flexion, settings.max_knee_flexion + 1e-9) << "frame " << f << " leg " << leg;
+    }
+  }
+}
+
+TEST_F(FootLockWalk, IsDeterministic) {
+  FootLockWorkspace other_ws;
+  SkeletalMotion again;
+  ASSERT_TRUE(lock_feet(w->skeleton, w->legs, w->motion, settings, other_ws, again));
+  ASSERT_EQ(again.local_rotations.size(), locked.local_rotations.size());
+  for (std::size_t i = 0; i < locked.local_rotations.size(); ++i) {
+    ASSERT_EQ(again.local_rotations[i].coeffs(), locked.local_rotations[i].coeffs()) << i;
+    ASSERT_EQ(again.local_translations[i], locked.local_translations[i]) << i;
+  }
+}
+
+TEST_F(FootLockWalk, RefusesBadInputWithAMessage) {
+  FootLockSettings bad;
+  bad.blend_frames = -3;
+  SkeletalMotion out;
+  EXPECT_EQ(lock_feet(w->skeleton, w->legs, w->motion, bad, ws, out).error().message,
+            "foot lock blend must be >= 0 frames, got -3");
+  const SkeletalMotion one_frame = make_motion(w->skeleton.joint_count(), 1, 1.0 / 120);
+  EXPECT_EQ(lock_feet(w->skeleton, w->legs, one_frame, {}, ws, out).error().message,
+            "foot lock needs at least 2 frames, got 1");
+  const SkeletalMotion wrong = make_motion(3, 10, 1.0 / 120);
+  EXPECT_EQ(lock_feet(w->skeleton, w->legs, wrong, {}, ws, out).error().message,
+            "foot lock motion has 3 joints but the skeleton " +
+                std::to_string(w->skeleton.joint_count()));
 }
 
 }  // namespace
