@@ -15,6 +15,7 @@
 #include "animkit/io/foot_lock_report.h"
 #include "animkit/kinematics/foot_lock.h"
 #include "cli_errors.h"
+#include "footlock_video.h"
 #include "run_output.h"
 
 namespace animkit::cli {
@@ -24,7 +25,7 @@ namespace {
 constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 
 struct FootlockArgs {
-  std::string in, out;
+  std::string in, out, video;
   double scale = 1.0;
   FootLockSettings settings;
   double knee_min_deg = FootLockSettings{}.min_knee_flexion / kRadiansPerDegree;
@@ -54,15 +55,29 @@ int run(FootlockArgs args) {
   if (!skeleton) return report_error(args.in + ": " + skeleton.error().message);
   const auto legs = find_biped_legs(*skeleton);
   if (!legs) return report_error(args.in + ": " + legs.error().message);
+  // Opened before the run, so a missing OpenGL or ffmpeg stops it before any file is written.
+  std::string video = args.video;
+  auto output = RunOutput::begin(args.out, video);
+  if (!output) return report_error(output.error().message);
+  PictureArgs picture_args;
+  picture_args.no_picture = true;  // compare.png is a plot, not a rendering
+  picture_args.video = video;
+  // BVH files print the frame time rounded (0.0083333 s): 120.0005 fps would be taken every
+  // third frame instead of every second one, so a rate this near a whole number is that number.
+  double fps = 1.0 / clip->frame_time;
+  if (std::abs(fps - std::round(fps)) < 0.01) fps = std::round(fps);
+  auto pictures = PictureOutput::open(picture_args, output->has_folder(), fps);
+  if (!pictures) return report_error(pictures.error().message);
+
   const SkeletalMotion motion = motion_from_bvh(*clip);
   FootLockWorkspace workspace;
   SkeletalMotion locked;
   const auto result = lock_feet(*skeleton, *legs, motion, settings, workspace, locked);
   if (!result) return report_error(args.in + ": " + result.error().message);
 
-  std::string no_video;
-  auto output = RunOutput::begin(args.out, no_video);
-  if (!output) return report_error(output.error().message);
+  if (auto ok = render_foot_lock_video(*skeleton, motion, locked, *result, *pictures); !ok) {
+    return report_error(ok.error().message);
+  }
   // The fixed clip goes back in the file's own units.
   motion_to_bvh(locked, *clip);
   scale_bvh_clip(*clip, 1.0 / args.scale);
@@ -84,6 +99,7 @@ int run(FootlockArgs args) {
       m.slide_after_mean_cm, m.slide_before_max_cm, m.slide_after_max_cm, m.ik_error_max_cm,
       m.ms_per_frame);
   std::printf("wrote fixed.bvh, metrics.json, compare.png to %s\n", args.out.c_str());
+  if (!args.video.empty()) std::printf("wrote %s\n", args.video.c_str());
   return 0;
 }
 
@@ -102,6 +118,9 @@ std::function<int()> add_footlock_command(CLI::App& app) {
                   "Folder for fixed.bvh, metrics.json and compare.png (created if needed; "
                   "replaced whole when the run ends)")
       ->required();
+  cmd->add_option("--video", args->video,
+                  "Also render the walk before (orange lines) and after (blue bones) to this "
+                  ".mp4 or .gif (needs OpenGL and ffmpeg)");
   cmd->add_option("--scale", args->scale,
                   "Metres per file unit (CMU's BVH: 0.056444); thresholds are in metres")
       ->capture_default_str();
