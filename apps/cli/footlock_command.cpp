@@ -143,6 +143,10 @@ std::function<int()> add_footlock_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--knee-max", args->knee_max_deg, "Most knee flexion on solved frames (deg)")
       ->capture_default_str();
+  cmd->add_option("--soft-reach", args->settings.soft_reach,
+                  "Near the straight leg's reach, approach it smoothly over this distance (m; 0: "
+                  "hard, the knee may snap)")
+      ->capture_default_str();
   cmd->add_option("--knee-pole", args->knee_pole,
                   "Where knees point: pelvis-forward or original (the clip's own bend)")
       ->capture_default_str();

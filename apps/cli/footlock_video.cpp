@@ -25,7 +25,7 @@ void describe(const Skeleton& skeleton, const SkeletonPose& before, const Skelet
     }
   }
   for (const FootContacts& c : result.contacts) {
-    if (c.planted[frame]) list.add_point(c.spans[c.span_of[frame]].lock, palette::target, 10.0f);
+    if (c.planted[frame]) list.add_point(c.lock[frame], palette::target, 10.0f);
   }
 }
 

@@ -107,6 +107,7 @@ std::string foot_lock_metrics_json(const FootLockResult& result, const FootLockS
        {{"before", m.max_joint_step_before_cm}, {"after", m.max_joint_step_after_cm}}},
       {"max_leg_step_cm",
        {{"before", m.max_leg_step_before_cm}, {"after", m.max_leg_step_after_cm}}},
+      {"max_correction_step_cm", m.max_correction_step_cm},
       {"ms_per_frame", m.ms_per_frame},
       {"settings",
        {{"height_threshold_m", s.height_threshold},
@@ -115,7 +116,8 @@ std::string foot_lock_metrics_json(const FootLockResult& result, const FootLockS
         {"merge_gap_frames", s.merge_gap_frames},
         {"blend_frames", s.blend_frames},
         {"knee_flexion_rad", {{"min", s.min_knee_flexion}, {"max", s.max_knee_flexion}}},
-        {"knee_pole", std::string(to_string(s.knee_pole))}}},
+        {"knee_pole", std::string(to_string(s.knee_pole))},
+        {"soft_reach_m", s.soft_reach}}},
   };
   // The input's name comes from the user: bytes that are not UTF-8 become U+FFFD.
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";

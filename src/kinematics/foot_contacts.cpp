@@ -34,6 +34,49 @@ Result<LegJoints> find_leg(const Skeleton& skeleton, const std::string& side) {
   return leg;
 }
 
+// Weights and lock points: 1 and the span's lock on a span; around it, ramps of smoothstep
+// weight over `blend` frames toward its lock. A gap short enough for the ramps of its two spans
+// to meet (at most 2 blend frames) has the larger of the two weights and a lock moving from the
+// first span's to the second's by smoothstep across the gap: both continuous, so no pop.
+void assign_weights(int blend, FootContacts& c) {
+  const int n = static_cast<int>(c.planted.size());
+  const auto ramp = [blend](int outside) {
+    return outside > blend ? 0.0 : smoothstep(1.0 - static_cast<double>(outside) / (blend + 1));
+  };
+  const int spans = static_cast<int>(c.spans.size());
+  for (int s = 0; s < spans; ++s) {
+    const FootContactSpan& span = c.spans[s];
+    for (int f = span.first; f <= span.last; ++f) {
+      c.weight[f] = 1.0;
+      c.lock[f] = span.lock;
+    }
+    const int next = s + 1 < spans ? c.spans[s + 1].first : n + blend + 1;
+    const bool meet = s + 1 < spans && next - span.last - 1 <= 2 * blend;
+    for (int f = span.last + 1; f < std::min(next, n); ++f) {
+      if (meet) {
+        const FootContactSpan& b = c.spans[s + 1];
+        const double t = smoothstep(static_cast<double>(f - span.last) / (b.first - span.last));
+        c.weight[f] = std::max(ramp(f - span.last), ramp(b.first - f));
+        c.lock[f] = (1.0 - t) * span.lock + t * b.lock;
+      } else if (f - span.last <= blend) {
+        c.weight[f] = ramp(f - span.last);
+        c.lock[f] = span.lock;
+      } else if (next - f <= blend) {
+        c.weight[f] = ramp(next - f);
+        c.lock[f] = c.spans[s + 1].lock;
+      }
+    }
+  }
+  // Before the first span: its ramp in.
+  if (spans > 0) {
+    const FootContactSpan& first = c.spans.front();
+    for (int f = std::max(first.first - blend, 0); f < first.first; ++f) {
+      c.weight[f] = ramp(first.first - f);
+      c.lock[f] = first.lock;
+    }
+  }
+}
+
 }  // namespace
 
 Result<BipedLegs> find_biped_legs(const Skeleton& skeleton) {
@@ -75,6 +118,9 @@ std::optional<Error> FootLockSettings::validate() const {
   if (blend_frames < 0) {
     return Error{"foot lock blend must be >= 0 frames, got " + std::to_string(blend_frames)};
   }
+  if (!(std::isfinite(soft_reach) && soft_reach >= 0.0)) {
+    return Error{"foot lock soft reach must be >= 0 metres, got " + format_number(soft_reach)};
+  }
   const bool range_ok = std::isfinite(min_knee_flexion) && std::isfinite(max_knee_flexion) &&
                         min_knee_flexion >= 0.0 && min_knee_flexion < max_knee_flexion &&
                         max_knee_flexion <= std::numbers::pi;
@@ -107,7 +153,7 @@ FootContacts detect_foot_contacts(const std::vector<Vec3>& ankle, double frame_t
   FootContacts c;
   c.planted.assign(n, 0);
   c.weight.assign(n, 0.0);
-  c.span_of.assign(n, -1);
+  c.lock.assign(n, Vec3::Zero());
   // Low and slow: central differences inside, one-sided at the ends.
   for (int f = 0; f < n; ++f) {
     const int a = std::max(f - 1, 0), b = std::min(f + 1, n - 1);
@@ -141,21 +187,7 @@ FootContacts detect_foot_contacts(const std::vector<Vec3>& ankle, double frame_t
     }
     f = last + 1;
   }
-  // Weights: 1 on a span, smoothstep over blend_frames on each side; where the ramps of two
-  // spans overlap, the nearer (heavier) one wins.
-  const int blend = settings.blend_frames;
-  for (int s = 0; s < static_cast<int>(c.spans.size()); ++s) {
-    const FootContactSpan& span = c.spans[s];
-    const int from = std::max(span.first - blend, 0), to = std::min(span.last + blend, n - 1);
-    for (int f = from; f <= to; ++f) {
-      const int outside = f < span.first ? span.first - f : (f > span.last ? f - span.last : 0);
-      const double w = smoothstep(1.0 - static_cast<double>(outside) / (blend + 1));
-      if (w > c.weight[f]) {
-        c.weight[f] = w;
-        c.span_of[f] = s;
-      }
-    }
-  }
+  assign_weights(settings.blend_frames, c);
   return c;
 }
 

@@ -40,6 +40,20 @@ void size_workspace(const Skeleton& skeleton, FootLockWorkspace& ws) {
     ws.pose = skeleton_rest_pose(skeleton);
   }
   ws.previous_positions.resize(skeleton.joint_count());
+  ws.original_positions.resize(skeleton.joint_count());
+  ws.corrections.assign(skeleton.joint_count(), Vec3::Zero());
+}
+
+// Largest change of a joint's correction (after - before) since the last frame, which this
+// frame's corrections then replace.
+double correction_step(const SkeletonPose& pose, FootLockWorkspace& ws) {
+  double step = 0.0;
+  for (std::size_t j = 0; j < ws.corrections.size(); ++j) {
+    const Vec3 correction = pose.global_positions[j] - ws.original_positions[j];
+    step = std::max(step, (correction - ws.corrections[j]).norm());
+    ws.corrections[j] = correction;
+  }
+  return step;
 }
 
 // Joints whose position the lock can change: a knee moves when its hip turns, so the knees and
@@ -100,10 +114,14 @@ double measure_original(const Skeleton& skeleton, const BipedLegs& legs,
   return ground;
 }
 
-// The ankle target of one leg: pulled toward the lock by w, then moved along the hip-target
-// line into the distances the knee's flexion range allows (law of cosines:
-// d^2 = l1^2 + l2^2 + 2 l1 l2 cos(flexion)).
-Vec3 leg_target(const Vec3& hip, double l1, double l2, const Vec3& wanted,
+// The ankle target of one leg: moved along the hip-target line into the distances the knee's
+// flexion range allows (law of cosines: d^2 = l1^2 + l2^2 + 2 l1 l2 cos(flexion)). Near the
+// longest distance a hard clamp makes the knee snap as a target crosses it (the flexion grows
+// like the square root of the distance missing), so from d_soft = max(longest - soft_reach,
+// the original ankle's distance d0) on, the distance approaches the longest one exponentially:
+// d_soft + s (1 - exp(-(d - d_soft) / s)) with s = longest - d_soft, the same slope as d at
+// d_soft. Starting no earlier than d0 keeps the original pose where the weight is 0.
+Vec3 leg_target(const Vec3& hip, double l1, double l2, double original_distance, const Vec3& wanted,
                 const FootLockSettings& s) {
   const auto reach = [&](double flexion) {
     return std::sqrt(std::max(l1 * l1 + l2 * l2 + 2.0 * l1 * l2 * std::cos(flexion), 0.0));
@@ -111,8 +129,14 @@ Vec3 leg_target(const Vec3& hip, double l1, double l2, const Vec3& wanted,
   const Vec3 d = wanted - hip;
   const double dist = d.norm();
   if (!(dist > 0.0)) return wanted;
-  const double clamped = std::clamp(dist, reach(s.max_knee_flexion), reach(s.min_knee_flexion));
-  return clamped == dist ? wanted : Vec3(hip + d * (clamped / dist));
+  const double shortest = reach(s.max_knee_flexion), longest = reach(s.min_knee_flexion);
+  double kept = std::clamp(dist, shortest, longest);
+  const double soft_start = std::max(longest - s.soft_reach, original_distance);
+  const double soft = longest - soft_start;
+  if (soft > 0.0 && dist > soft_start) {
+    kept = soft_start + soft * (1.0 - std::exp(-(dist - soft_start) / soft));
+  }
+  return kept == dist ? wanted : Vec3(hip + d * (kept / dist));
 }
 
 // Stage 2 for one leg of one frame: solve hip and knee for the weighted target and write the
@@ -132,7 +156,8 @@ double solve_leg(const Skeleton& skeleton, const LegJoints& leg, const Vec3& loc
     const Vec3 mixed = (1.0 - w) * bend + w * forward;
     pole_dir = mixed.norm() > 1e-9 ? Vec3(mixed.normalized()) : forward;
   }
-  TwoBoneInput in{hip, knee, ankle, leg_target(hip, l1, l2, wanted, s), knee + l1 * pole_dir};
+  TwoBoneInput in{hip, knee, ankle, leg_target(hip, l1, l2, axis.norm(), wanted, s),
+                  knee + l1 * pole_dir};
   const auto solved = solve_two_bone(in);
   if (!solved) return (ankle - wanted).norm();  // only on degenerate bones: leave the leg
   const int parent = skeleton.parents()[leg.hip];
@@ -203,18 +228,20 @@ Result<FootLockResult> lock_feet(const Skeleton& skeleton, const BipedLegs& legs
   output.local_rotations = input.local_rotations;
   output.local_translations = input.local_translations;
   result.ankles_after.resize(result.ankles_before.size());
-  double error_sum = 0.0;
+  double error_sum = 0.0, correction = 0.0;
   Steps steps;
   int solves = 0;
   for (int f = 0; f < frames; ++f) {
     input.read_frame(f, ws.pose);
     skeleton_forward_kinematics(skeleton, ws.pose);
     const Vec3 forward = pelvis_forward(ws.pose, legs);
+    std::copy(ws.pose.global_positions.begin(), ws.pose.global_positions.end(),
+              ws.original_positions.begin());
     bool changed = false;
     for (int leg = 0; leg < 2; ++leg) {
       const FootContacts& c = result.contacts[leg];
       if (c.weight[f] <= 0.0) continue;
-      const Vec3& lock = c.spans[c.span_of[f]].lock;
+      const Vec3& lock = c.lock[f];
       const double error =
           solve_leg(skeleton, legs[leg], lock, c.weight[f], forward, settings, ws.pose);
       error_sum += error;
@@ -230,7 +257,10 @@ Result<FootLockResult> lock_feet(const Skeleton& skeleton, const BipedLegs& legs
       result.ankles_after[f * 2 + leg] = ws.pose.global_positions[legs[leg].ankle];
     }
     joint_step(ws.pose, ws, f == 0, steps);
+    const double step = correction_step(ws.pose, ws);  // frame 0's is no step
+    if (f > 0) correction = std::max(correction, step);
   }
+  m.max_correction_step_cm = correction * kCentimetresPerMetre;
   m.max_joint_step_after_cm = steps.all * kCentimetresPerMetre;
   m.max_leg_step_after_cm = steps.legs * kCentimetresPerMetre;
   if (solves > 0) m.ik_error_mean_cm = error_sum / solves * kCentimetresPerMetre;

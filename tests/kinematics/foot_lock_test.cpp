@@ -36,6 +36,9 @@ TEST(FootLockSettings, DefaultsAreValidAndErrorsNameTheField) {
   s.blend_frames = -1;
   EXPECT_EQ(s.validate()->message, "foot lock blend must be >= 0 frames, got -1");
   s = {};
+  s.soft_reach = -0.5;
+  EXPECT_EQ(s.validate()->message, "foot lock soft reach must be >= 0 metres, got -0.5");
+  s = {};
   s.max_knee_flexion = 4;
   EXPECT_EQ(s.validate()->message,
             "foot lock knee flexion range must satisfy 0 <= min < max <= pi radians, got [0, 4]");
@@ -84,11 +87,26 @@ TEST(FootContacts, FindsLowSlowRunsAndRampsTheWeights) {
   EXPECT_EQ(c.weight[19], smoothstep(0.75));
   EXPECT_EQ(c.weight[21], smoothstep(0.25));
   EXPECT_EQ(c.weight[22], 0.0);
-  EXPECT_EQ(c.span_of[22], -1);
-  EXPECT_EQ(c.span_of[28], 1);
+  EXPECT_EQ(c.lock[21], c.spans[0].lock);
+  EXPECT_EQ(c.lock[28], c.spans[1].lock);
   EXPECT_EQ(c.weight[28], smoothstep(0.25));
   EXPECT_EQ(c.weight[27], 0.0);
   EXPECT_EQ(c.planted[25], 0);
+}
+
+TEST(FootContacts, RampsThatMeetMoveTheLockAcrossTheGapWithoutAJump) {
+  FootLockSettings s;
+  s.blend_frames = 8;  // the 12-frame gap 19..30 is shorter than two ramps
+  const FootContacts c = detect_foot_contacts(made_up_trail(), 0.1, 0.1, s);
+  ASSERT_EQ(c.spans.size(), 2u);
+  double previous_x = 0.0;
+  for (int f = 19; f <= 30; ++f) {
+    EXPECT_GT(c.weight[f], 0.0) << f;
+    EXPECT_GE(c.lock[f].x(), previous_x) << f;  // from the first lock (x 0) to the second (x 1)
+    EXPECT_LT(c.lock[f].x() - previous_x, 0.25) << f;
+    previous_x = c.lock[f].x();
+  }
+  EXPECT_EQ(c.lock[31], c.spans[1].lock);
 }
 
 TEST(FootContacts, ShortRunsAreDroppedAndShortGapsMerged) {
@@ -220,7 +238,7 @@ TEST_F(FootLockWalk, FramesWithoutWeightAreUnchangedAndBlendsMoveTheAnkleByTheWe
       if (c.weight[f] <= 0.0 || c.weight[f] >= 1.0) continue;
       ++blended;
       const int ankle = w->legs[leg].ankle;
-      const Vec3 lock = c.spans[c.span_of[f]].lock, a0 = before[f].global_positions[ankle];
+      const Vec3 lock = c.lock[f], a0 = before[f].global_positions[ankle];
       // The ankle moves toward the lock by the weight's share of the way, no more.
       EXPECT_LE((after[f].global_positions[ankle] - a0).norm(),
                 c.weight[f] * (lock - a0).norm() + 1e-9)
@@ -246,12 +264,37 @@ TEST_F(FootLockWalk, KeepsBonesAnkleOrientationAndKneeRange) {
       ASSERT_LT(
           after[f].global_rotations[l.ankle].angularDistance(before[f].global_rotations[l.ankle]),
           1e-9);
-      if (result.contacts[leg].weight[f] < 1.0) continue;
+      if (result.contacts[leg].weight[f] <= 0.0) continue;
       const double flexion = knee_flexion(p1[l.hip], p1[l.knee], p1[l.ankle], forward);
       ASSERT_GE(flexion, settings.min_knee_flexion - 1e-9) << "frame " << f << " leg " << leg;
       ASSERT_LE(flexion, settings.max_knee_flexion + 1e-9) << "frame " << f << " leg " << leg;
     }
   }
+}
+
+TEST_F(FootLockWalk, BlendsAvoidThePopOfSnapping) {
+  // Snapping (no blend) moves the ankle to its lock in one frame; the default blend spreads
+  // the same correction over 10 frames each side, so its largest change per frame is far less.
+  FootLockSettings snap = settings;
+  snap.blend_frames = 0;
+  SkeletalMotion out;
+  const auto snapped = lock_feet(w->skeleton, w->legs, w->motion, snap, ws, out);
+  ASSERT_TRUE(snapped);
+  std::printf("largest correction step, cm: blend %d: %.3f, no blend: %.3f\n",
+              settings.blend_frames, result.metrics.max_correction_step_cm,
+              snapped->metrics.max_correction_step_cm);
+  EXPECT_LT(result.metrics.max_correction_step_cm, 0.5 * snapped->metrics.max_correction_step_cm);
+  EXPECT_LT(result.metrics.max_correction_step_cm, 2.0);
+}
+
+TEST_F(FootLockWalk, TheOriginalKneePoleLocksAsWell) {
+  FootLockSettings original = settings;
+  original.knee_pole = KneePole::original;
+  SkeletalMotion out;
+  const auto r = lock_feet(w->skeleton, w->legs, w->motion, original, ws, out);
+  ASSERT_TRUE(r);
+  EXPECT_LT(r->metrics.slide_after_mean_cm, 0.5);
+  EXPECT_LT(r->metrics.slide_after_max_cm, 0.5);
 }
 
 TEST_F(FootLockWalk, IsDeterministic) {

@@ -15,7 +15,7 @@ namespace animkit {
 /// The run's facts as JSON: {"input", "frames", "frame_time", "contacts": {"left", "right"},
 /// "planted_frames": {...}, "sliding_cm_per_frame": {"before": {"mean", "max"}, "after":
 /// {...}}, "ik_error_cm": {"mean", "max"}, "max_joint_step_cm": {"before", "after"},
-/// "max_leg_step_cm": {...}, "ms_per_frame", "settings": {...}}.
+/// "max_leg_step_cm": {...}, "max_correction_step_cm", "ms_per_frame", "settings": {...}}.
 std::string foot_lock_metrics_json(const FootLockResult& result, const FootLockSettings& settings,
                                    std::string_view input, int frames, double frame_time);
 

@@ -65,6 +65,12 @@ struct FootLockSettings {
   double min_knee_flexion = 0.0;
   double max_knee_flexion = 2.6179938779914944;
   KneePole knee_pole = KneePole::pelvis_forward;
+  /// Soft reach ("soft IK"): within this distance of the straight leg's reach, the ankle's
+  /// distance from the hip approaches the full reach exponentially instead of stopping at it.
+  /// Without it a target crossing the reach makes the knee snap (flexion grows like the square
+  /// root of the distance missing, a near-infinite knee speed); with it the ankle falls short
+  /// by a little near full extension. Metres, >= 0 (0: hard); default 0.01.
+  double soft_reach = 0.01;
 
   /// The first problem ("foot lock height threshold must be > 0, got -1"), or nothing.
   std::optional<Error> validate() const;
@@ -82,9 +88,11 @@ struct FootContacts {
   std::vector<std::uint8_t> planted;   ///< per frame: 1 inside a span
   std::vector<FootContactSpan> spans;  ///< in frame order, disjoint
   /// Per frame: the lock weight in [0, 1] (1 planted, smoothstep ramps within blend_frames of a
-  /// span, 0 elsewhere) and the span it pulls toward (-1 where the weight is 0).
+  /// span, 0 elsewhere) and the point it pulls the ankle toward (world, metres; zero where the
+  /// weight is 0): the span's lock, or, in a gap where the ramps of two spans meet, a smoothstep
+  /// mix of both locks from one to the other, so the target never jumps.
   std::vector<double> weight;
-  std::vector<int> span_of;
+  std::vector<Vec3> lock;
 };
 
 /// Contacts of one foot from its ankle's world positions (one per frame, metres): planted where
@@ -112,8 +120,11 @@ struct FootLockMetrics {
   double ik_error_mean_cm = 0.0, ik_error_max_cm = 0.0;
   /// Largest move of any joint between consecutive frames, cm.
   double max_joint_step_before_cm = 0.0, max_joint_step_after_cm = 0.0;
-  /// The same over the joints the lock can move (knees, ankles and below): a pop shows here.
+  /// The same over the joints the lock can move (knees, ankles and below).
   double max_leg_step_before_cm = 0.0, max_leg_step_after_cm = 0.0;
+  /// Largest change between consecutive frames of any joint's correction (its position after
+  /// minus before), cm: a pop into or out of a contact shows here, a smooth blend keeps it low.
+  double max_correction_step_cm = 0.0;
   double ms_per_frame = 0.0;  ///< wall time of the lock (detection, solves, metrics) per frame
 };
 
@@ -130,6 +141,7 @@ struct FootLockWorkspace {
   SkeletonPose pose;
   std::vector<Vec3> previous_positions;
   std::vector<std::uint8_t> in_leg;  ///< per joint: 1 for a knee, an ankle or below them
+  std::vector<Vec3> original_positions, corrections;  ///< per joint, this frame / the last
 };
 
 /// Locks the feet of `input` (a motion of `skeleton`) into `output` (resized to match; frames
