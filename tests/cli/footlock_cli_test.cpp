@@ -12,6 +12,7 @@
 #include "animkit/io/bvh.h"
 #include "animkit/io/foot_lock_report.h"
 #include "animkit/io/png.h"
+#include "animkit/io/video_writer.h"
 
 namespace {
 
@@ -68,6 +69,23 @@ TEST(FootlockCli, LocksTheWalkAndWritesClipMetricsAndPicture) {
   ASSERT_TRUE(picture) << picture.error().message;
   EXPECT_EQ(picture->width, animkit::kFootLockPlotWidth);
   EXPECT_EQ(picture->height, 2 * animkit::kFootLockPlotHeight);
+}
+
+TEST(FootlockCli, VideoShowsTheWalkAtSixtyFramesPerSecond) {
+  if (!fs::exists(kWalk)) GTEST_SKIP() << kWalk << " is not here";
+  if (!animkit::find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
+  const fs::path out = fresh_dir("video") / "run";
+  const auto r =
+      run_command(kCli + " footlock --in " + kWalk.string() + " --scale 0.056444 --out " +
+                  out.string() + " --video " + (out / "walk.mp4").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out / "fixed.bvh"));
+  // 994 frames at 120 fps, every second one kept.
+  const auto probe = run_command(
+      "ffprobe -v error -count_frames -select_streams v:0 "
+      "-show_entries stream=nb_read_frames -of csv=p=0 " +
+      (out / "walk.mp4").string());
+  EXPECT_EQ(probe.out, "497\n");
 }
 
 TEST(FootlockCli, InIsRequired) {
