@@ -61,7 +61,9 @@ struct FootLockSettings {
   int blend_frames = 10;
   /// Knee flexion range (0 = straight, positive = knee forward of the hip-ankle line), radians.
   /// The ankle target's distance from the hip is clamped to what this range allows.
-  /// 0 <= min_knee_flexion < max_knee_flexion <= pi; defaults 0 and 150 degrees.
+  /// 0 <= min_knee_flexion < max_knee_flexion <= pi; defaults 0 and 150 degrees. A minimum
+  /// above 0 bends knees the clip holds straighter than that as soon as a blend starts (a
+  /// small pop at the blend's first frame): the clip breaks the limit, the lock enforces it.
   double min_knee_flexion = 0.0;
   double max_knee_flexion = 2.6179938779914944;
   KneePole knee_pole = KneePole::pelvis_forward;
