@@ -98,4 +98,19 @@ bool tree_ik_reachable(const Skeleton& skeleton, const SkeletonPose& pose,
   return true;
 }
 
+void TreeIkScratch::resize(int joint_count) {
+  const auto n = static_cast<std::size_t>(joint_count);
+  subtree_weight.resize(n);
+  below_weight.resize(n);
+  effector_of.resize(n);
+  best_local_rotations.resize(n);
+  marks.resize(n);
+}
+
+bool TreeIkScratch::fits(int joint_count) const {
+  const auto n = static_cast<std::size_t>(joint_count);
+  return subtree_weight.size() == n && below_weight.size() == n && effector_of.size() == n &&
+         best_local_rotations.size() == n && marks.size() == n;
+}
+
 }  // namespace animkit
