@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 #include "tree_ik_common.h"
 
@@ -83,6 +85,7 @@ class FabrikTreeIteration final : public detail::TreeIteration {
       if (scratch.below_weight[j] > 0.0) {
         const Quat current = above * local;
         detail::BestFitRotation fit;
+        int aimed = -1;
         for (int k = begin[j]; k < begin[j + 1]; ++k) {
           const auto c = static_cast<std::size_t>(children[static_cast<std::size_t>(k)]);
           if (scratch.subtree_weight[c] <= 0.0) continue;
@@ -92,9 +95,11 @@ class FabrikTreeIteration final : public detail::TreeIteration {
           if (norm == 0.0) continue;
           fit.add(current * pose.local_translations[c], to * (length / norm),
                   scratch.subtree_weight[c]);
+          aimed = static_cast<int>(c);
         }
-        local = detail::limited_local(skeleton_, problem_.limits, i,
-                                      above.conjugate() * fit.rotation() * current);
+        Quat turned = fit.rotation() * current;
+        if (fit.count() == 1) turned = twist_toward_grandchildren(pose, i, aimed, above, turned);
+        local = detail::limited_local(skeleton_, problem_.limits, i, above.conjugate() * turned);
       } else if (const int e = scratch.effector_of[j]; e >= 0) {
         const auto& orientation = problem_.effectors[static_cast<std::size_t>(e)].orientation;
         if (orientation) {
@@ -104,6 +109,93 @@ class FabrikTreeIteration final : public detail::TreeIteration {
       }
       pose.global_rotations[j] = above * local;
     }
+  }
+
+  // A joint aiming one child's bone has one degree of freedom left, the twist about that bone,
+  // which moves no child but decides where the grandchildren can go. Without limits it is the
+  // weighted least-squares rotation (the child keeping its local rotation) in the plane
+  // perpendicular to the bone axis a,
+  //   angle = atan2(sum_g w_g a . (u_g x v_g), sum_g w_g u_g . v_g),
+  // with u_g, v_g the grandchild's current and asked offsets from the joint projected on that
+  // plane. With limits that angle and seven more, an eighth of a turn apart,
+  // are each tried: the joint turned and limited, the child aimed and limited as the pass
+  // will do it, and the twist whose grandchildren land nearest their asked positions wins.
+  // Otherwise a hinge below stays in whatever plane the shortest arcs leave it, bending the
+  // wrong way or not at all, and targets off that plane are never reached.
+  Quat twist_toward_grandchildren(const SkeletonPose& pose, int joint, int child, const Quat& above,
+                                  const Quat& rotation) const {
+    const auto j = static_cast<std::size_t>(joint);
+    const auto c = static_cast<std::size_t>(child);
+    const Vec3 bone = rotation * pose.local_translations[c];
+    const auto& begin = skeleton_.child_begin();
+    if (bone.squaredNorm() == 0.0 || begin[c] == begin[c + 1]) return rotation;
+    const Vec3 axis = bone.normalized();
+    const Vec3& at = pose.global_positions[j];
+    const Quat child_rotation = rotation * pose.local_rotations[c];
+    double sine = 0.0, cosine = 0.0;
+    for (int k = begin[c]; k < begin[c + 1]; ++k) {
+      const auto g = static_cast<std::size_t>(skeleton_.child_list()[static_cast<std::size_t>(k)]);
+      const double w = ws_.scratch.subtree_weight[g];
+      if (w <= 0.0) continue;
+      Vec3 u = bone + child_rotation * pose.local_translations[g];
+      Vec3 v = ws_.desired[g] - at;
+      u -= axis * axis.dot(u);
+      v -= axis * axis.dot(v);
+      sine += w * axis.dot(u.cross(v));
+      cosine += w * u.dot(v);
+    }
+    const double angle = sine == 0.0 && cosine >= 0.0 ? 0.0 : std::atan2(sine, cosine);
+    if (problem_.limits.empty()) return Quat(Eigen::AngleAxisd(angle, axis)) * rotation;
+    constexpr int kCandidates = 8;
+    Quat best = rotation;
+    double best_error = std::numeric_limits<double>::infinity();
+    for (int m = 0; m < kCandidates; ++m) {
+      const double turn = angle + 2.0 * std::numbers::pi * m / kCandidates;
+      const Quat candidate = Quat(Eigen::AngleAxisd(turn, axis)) * rotation;
+      const double error = aim_error(pose, joint, child, above, candidate);
+      if (error < best_error) {
+        best_error = error;
+        best = candidate;
+      }
+    }
+    return best;
+  }
+
+  // How far the child and grandchildren land from their asked positions (weighted squares)
+  // when the joint takes world rotation `rotation` (then limited) and the child aims its
+  // children as the forward pass will (best fit, then limited).
+  double aim_error(const SkeletonPose& pose, int joint, int child, const Quat& above,
+                   const Quat& rotation) const {
+    const auto j = static_cast<std::size_t>(joint);
+    const auto c = static_cast<std::size_t>(child);
+    const auto& weight = ws_.scratch.subtree_weight;
+    const Quat joint_rotation = above * detail::limited_local(skeleton_, problem_.limits, joint,
+                                                              above.conjugate() * rotation);
+    const Vec3 at_child = pose.global_positions[j] + joint_rotation * pose.local_translations[c];
+    const Quat current = joint_rotation * pose.local_rotations[c];
+    const auto& begin = skeleton_.child_begin();
+    detail::BestFitRotation fit;
+    for (int k = begin[c]; k < begin[c + 1]; ++k) {
+      const auto g = static_cast<std::size_t>(skeleton_.child_list()[static_cast<std::size_t>(k)]);
+      if (weight[g] <= 0.0) continue;
+      const Vec3 to = ws_.desired[g] - at_child;
+      const double norm = to.norm();
+      if (norm == 0.0) continue;
+      fit.add(current * pose.local_translations[g], to * (pose.local_translations[g].norm() / norm),
+              weight[g]);
+    }
+    const Quat child_rotation =
+        joint_rotation *
+        detail::limited_local(skeleton_, problem_.limits, child,
+                              joint_rotation.conjugate() * fit.rotation() * current);
+    double error = weight[c] * (at_child - ws_.desired[c]).squaredNorm();
+    for (int k = begin[c]; k < begin[c + 1]; ++k) {
+      const auto g = static_cast<std::size_t>(skeleton_.child_list()[static_cast<std::size_t>(k)]);
+      if (weight[g] <= 0.0) continue;
+      const Vec3 placed = at_child + child_rotation * pose.local_translations[g];
+      error += weight[g] * (placed - ws_.desired[g]).squaredNorm();
+    }
+    return error;
   }
 
   const Skeleton& skeleton_;

@@ -12,7 +12,7 @@ namespace animkit::detail {
 
 namespace {
 
-// An iteration that lowers the score (below) by less than this fraction makes no progress;
+// An iteration that changes the score (below) by less than this fraction makes no progress;
 // after kStallIterations of them in a row the solve bends its joints once (up to kMaxKicks
 // times) and then stops.
 constexpr double kStallRatio = 1e-6;
@@ -154,7 +154,9 @@ TreeIkResult run_tree_ik(const Skeleton& skeleton, const TreeIkProblem& problem,
       best = next;
       scratch.best_local_rotations = pose.local_rotations;
     }
-    stalled = next > current * (1.0 - kStallRatio) ? stalled + 1 : 0;
+    // Only an iteration that changes nothing counts: with limits the score may rise for a few
+    // iterations on the way to a solution.
+    stalled = std::abs(next - current) <= kStallRatio * current ? stalled + 1 : 0;
     current = next;
     if (stalled >= kStallIterations && current > 1.0) {
       if (kicks == kMaxKicks) break;

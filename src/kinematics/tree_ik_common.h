@@ -46,6 +46,8 @@ class BestFitRotation {
   void add(const Vec3& from, const Vec3& to, double weight);
   /// Identity when no pair was added.
   Quat rotation() const;
+  /// How many pairs were added (pairs with a zero vector are not counted).
+  int count() const { return count_; }
 
  private:
   Eigen::Matrix3d h_ = Eigen::Matrix3d::Zero();
