@@ -32,8 +32,9 @@ class CcdTreeIteration final : public detail::TreeIteration {
       const Quat above = detail::parent_rotation(skeleton_, pose, i);
       Quat& local = pose.local_rotations[j];
       if (scratch.below_weight[j] > 0.0) {
-        local = detail::limited_local(skeleton_, problem_.limits, i,
-                                      above.conjugate() * best_turn(pose, i) * above * local);
+        local =
+            detail::limited_local(skeleton_, problem_.limits, i,
+                                  above.conjugate() * turn_toward_targets(pose, i) * above * local);
       } else if (const int e = scratch.effector_of[j]; e >= 0) {
         const auto& orientation = problem_.effectors[static_cast<std::size_t>(e)].orientation;
         if (!orientation) continue;
@@ -49,7 +50,7 @@ class CcdTreeIteration final : public detail::TreeIteration {
  private:
   // The world rotation about joint i that best takes its effectors onto their targets:
   // pairs (e_k - p, t_k - p) weighted by w_k (see BestFitRotation).
-  Quat best_turn(const SkeletonPose& pose, int i) const {
+  Quat turn_toward_targets(const SkeletonPose& pose, int i) const {
     const Vec3& at = pose.global_positions[static_cast<std::size_t>(i)];
     detail::BestFitRotation fit;
     for (const Effector& e : problem_.effectors) {
@@ -57,7 +58,8 @@ class CcdTreeIteration final : public detail::TreeIteration {
       fit.add(pose.global_positions[static_cast<std::size_t>(e.joint)] - at, e.position - at,
               e.weight);
     }
-    return fit.rotation();
+    return detail::best_turn(fit, skeleton_, problem_.limits, i,
+                             detail::parent_rotation(skeleton_, pose, i));
   }
 
   // Forward kinematics of joint i's subtree after its local rotation changed. Its descendants

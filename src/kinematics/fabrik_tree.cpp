@@ -97,8 +97,9 @@ class FabrikTreeIteration final : public detail::TreeIteration {
                   scratch.subtree_weight[c]);
           aimed = static_cast<int>(c);
         }
-        Quat turned = fit.rotation() * current;
-        if (fit.count() == 1) turned = twist_toward_grandchildren(pose, i, aimed, above, turned);
+        Quat turned = detail::best_turn(fit, skeleton_, problem_.limits, i, above) * current;
+        if (fit.count() == 1 && !detail::is_hinge(problem_.limits, i))
+          turned = twist_toward_grandchildren(pose, i, aimed, above, turned);
         local = detail::limited_local(skeleton_, problem_.limits, i, above.conjugate() * turned);
       } else if (const int e = scratch.effector_of[j]; e >= 0) {
         const auto& orientation = problem_.effectors[static_cast<std::size_t>(e)].orientation;
@@ -184,10 +185,10 @@ class FabrikTreeIteration final : public detail::TreeIteration {
       fit.add(current * pose.local_translations[g], to * (pose.local_translations[g].norm() / norm),
               weight[g]);
     }
+    const Quat turn = detail::best_turn(fit, skeleton_, problem_.limits, child, joint_rotation);
     const Quat child_rotation =
-        joint_rotation *
-        detail::limited_local(skeleton_, problem_.limits, child,
-                              joint_rotation.conjugate() * fit.rotation() * current);
+        joint_rotation * detail::limited_local(skeleton_, problem_.limits, child,
+                                               joint_rotation.conjugate() * turn * current);
     double error = weight[c] * (at_child - ws_.desired[c]).squaredNorm();
     for (int k = begin[c]; k < begin[c + 1]; ++k) {
       const auto g = static_cast<std::size_t>(skeleton_.child_list()[static_cast<std::size_t>(k)]);

@@ -135,6 +135,23 @@ Quat BestFitRotation::rotation() const {
   return Quat(Eigen::Matrix3d(v * d * u.transpose())).normalized();
 }
 
+Quat BestFitRotation::rotation_about(const Vec3& axis) const {
+  if (count_ == 0) return Quat::Identity();
+  const Vec3 cross(h_(1, 2) - h_(2, 1), h_(2, 0) - h_(0, 2), h_(0, 1) - h_(1, 0));
+  const double sine = axis.dot(cross);
+  const double cosine = h_.trace() - axis.dot(h_ * axis);
+  if (sine == 0.0 && cosine >= 0.0) return Quat::Identity();
+  return Quat(Eigen::AngleAxisd(std::atan2(sine, cosine), axis));
+}
+
+Quat best_turn(const BestFitRotation& fit, const Skeleton& skeleton,
+               std::span<const JointLimit> limits, int joint, const Quat& above) {
+  if (!is_hinge(limits, joint)) return fit.rotation();
+  const auto j = static_cast<std::size_t>(joint);
+  const Vec3 axis = above * (skeleton.rest_rotations()[j] * std::get<HingeLimit>(limits[j]).axis);
+  return fit.rotation_about(axis.normalized());
+}
+
 TreeIkResult run_tree_ik(const Skeleton& skeleton, const TreeIkProblem& problem,
                          const TreeLoopSettings& settings, TreeIkScratch& scratch,
                          SkeletonPose& pose, TreeIteration& iteration) {

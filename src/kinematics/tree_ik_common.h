@@ -46,6 +46,12 @@ class BestFitRotation {
   void add(const Vec3& from, const Vec3& to, double weight);
   /// Identity when no pair was added.
   Quat rotation() const;
+  /// The rotation about the unit `axis` minimizing the same sum: with c = sum_k w_k u_k x v_k
+  /// (read off H's antisymmetric part) and the pairs' parts perpendicular to the axis,
+  ///   angle = atan2(axis . c, tr(H) - axis^T H axis).
+  /// A hinge's best turn; the twist part of the free best fit is not (it is nearest in angle,
+  /// not in where the pairs land).
+  Quat rotation_about(const Vec3& axis) const;
   /// How many pairs were added (pairs with a zero vector are not counted).
   int count() const { return count_; }
 
@@ -54,6 +60,18 @@ class BestFitRotation {
   Vec3 first_from_ = Vec3::Zero(), first_to_ = Vec3::Zero();
   int count_ = 0;
 };
+
+/// The world turn of `joint` that best fits `fit`: about the hinge's world axis when the joint
+/// has a hinge limit (its only freedom), the free best fit otherwise. `above` is the parent's
+/// world rotation.
+Quat best_turn(const BestFitRotation& fit, const Skeleton& skeleton,
+               std::span<const JointLimit> limits, int joint, const Quat& above);
+
+/// Whether `joint` has a hinge limit.
+inline bool is_hinge(std::span<const JointLimit> limits, int joint) {
+  return !limits.empty() &&
+         std::holds_alternative<HingeLimit>(limits[static_cast<std::size_t>(joint)]);
+}
 
 /// The world rotation of `joint`'s parent (identity for a root).
 inline Quat parent_rotation(const Skeleton& skeleton, const SkeletonPose& pose, int joint) {
