@@ -22,7 +22,7 @@ struct Fabrik {
 };
 
 TEST(FabrikTree, LimitsBonesAndRootsHoldOnThousandsOfRandomTargets) {
-  tree_checks::limits_bones_and_roots_hold<Fabrik>(3000, 12);
+  tree_checks::limits_bones_and_roots_hold<Fabrik>(2000, 12);
 }
 
 TEST(FabrikTree, InvalidInputFailsWithItsMessage) {
@@ -61,30 +61,34 @@ TEST(FabrikTree, LabArmReachesTheChainSolversTargets) {
   EXPECT_GT(targets, 100);
 }
 
+// Targets made by FK of random poses inside the limits, four effectors (hands and feet, weights
+// 1 to 2.5), solved from the rest pose; the fractions reached within tolerance (1e-4, 1e-3 rad)
+// are at least what this solver reached when the test was written, less a small margin (the
+// misses: slow convergence within 100 iterations, and with hinges, fixed points of the passes
+// short of the targets; see fabrik_tree.h).
 TEST(FabrikTree, ReachesJointlyReachableTargetsOnAFigure) {
   const Skeleton s = tree_samples::figure();
   const auto joints = tree_samples::joints_named(s, {"l_hand", "r_hand", "l_foot", "r_foot"});
-  FabrikTreeSettings settings;
-  const double free = tree_checks::fraction_reached<Fabrik>(s, {}, joints, false, 300, settings, 3);
-  const double limited = tree_checks::fraction_reached<Fabrik>(s, tree_samples::body_limits(s),
-                                                               joints, false, 300, settings, 4);
-  std::printf("figure, 4 effectors: free %.3f limited %.3f\n", free, limited);
-  EXPECT_GE(free, 0.0);
-  EXPECT_GE(limited, 0.0);
+  const auto f = tree_checks::reach_fractions<Fabrik>(s, joints, 200);
+  RecordProperty("fractions", tree_checks::describe(f));
+  EXPECT_GE(f.free_default, 0.83) << tree_checks::describe(f);
+  EXPECT_GE(f.free, 0.97) << tree_checks::describe(f);
+  EXPECT_GE(f.oriented, 0.97) << tree_checks::describe(f);
+  EXPECT_GE(f.balls, 0.91) << tree_checks::describe(f);
+  EXPECT_GE(f.hinges, 0.01) << tree_checks::describe(f);
 }
 
 TEST(FabrikTree, ReachesJointlyReachableTargetsOnTheCmuSkeleton) {
   const auto s = tree_samples::cmu_skeleton();
-  if (!s) GTEST_SKIP() << "no CMU data";
+  if (!s) GTEST_SKIP() << "no CMU data in " ANIMKIT_TEST_DATA_DIR;
   const auto joints = tree_samples::joints_named(*s, {"lhand", "rhand", "LeftAnkle", "RightAnkle"});
-  FabrikTreeSettings settings;
-  const double free =
-      tree_checks::fraction_reached<Fabrik>(*s, {}, joints, false, 300, settings, 5);
-  const double limited = tree_checks::fraction_reached<Fabrik>(*s, tree_samples::body_limits(*s),
-                                                               joints, false, 300, settings, 6);
-  std::printf("cmu, 4 effectors: free %.3f limited %.3f\n", free, limited);
-  EXPECT_GE(free, 0.0);
-  EXPECT_GE(limited, 0.0);
+  const auto f = tree_checks::reach_fractions<Fabrik>(*s, joints, 200);
+  RecordProperty("fractions", tree_checks::describe(f));
+  EXPECT_GE(f.free_default, 0.94) << tree_checks::describe(f);
+  EXPECT_GE(f.free, 0.99) << tree_checks::describe(f);
+  EXPECT_GE(f.oriented, 0.99) << tree_checks::describe(f);
+  EXPECT_GE(f.balls, 0.68) << tree_checks::describe(f);
+  EXPECT_GE(f.hinges, 0.23) << tree_checks::describe(f);
 }
 
 }  // namespace

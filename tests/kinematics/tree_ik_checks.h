@@ -149,4 +149,32 @@ void deterministic_and_workspace_reuse_is_invisible(std::uint64_t seed) {
   }
 }
 
+// Fractions of jointly reachable targets reached (fraction_reached) in five set-ups.
+struct ReachFractions {
+  double free_default = 0.0;  ///< no limits, the default settings (100 iterations)
+  double free = 0.0;          ///< no limits, 1000 iterations
+  double oriented = 0.0;      ///< no limits, orientation targets too, 1000 iterations
+  double balls = 0.0;         ///< ball limits only, 1000 iterations
+  double hinges = 0.0;        ///< balls and hinged knees and elbows, 1000 iterations
+};
+
+template <class Solver>
+ReachFractions reach_fractions(const Skeleton& s, const std::vector<int>& joints, int solves) {
+  typename Solver::Settings settings;
+  ReachFractions f;
+  f.free_default = fraction_reached<Solver>(s, {}, joints, false, solves, settings, 3);
+  settings.max_iterations = 1000;
+  f.free = fraction_reached<Solver>(s, {}, joints, false, solves, settings, 4);
+  f.oriented = fraction_reached<Solver>(s, {}, joints, true, solves, settings, 5);
+  f.balls = fraction_reached<Solver>(s, body_limits(s, false), joints, false, solves, settings, 6);
+  f.hinges = fraction_reached<Solver>(s, body_limits(s, true), joints, false, solves, settings, 7);
+  return f;
+}
+
+inline std::string describe(const ReachFractions& f) {
+  return "free (100 iterations) " + std::to_string(f.free_default) + ", free " +
+         std::to_string(f.free) + ", oriented " + std::to_string(f.oriented) + ", balls " +
+         std::to_string(f.balls) + ", hinges " + std::to_string(f.hinges);
+}
+
 }  // namespace animkit::tree_checks

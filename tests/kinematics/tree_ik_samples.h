@@ -56,10 +56,10 @@ inline std::vector<int> joints_named(const Skeleton& s, std::initializer_list<co
   return joints;
 }
 
-// Limits a body might have: knees and elbows hinges about the rest frame's z (or x for legs,
-// whose bones hang along -y), every other non-root joint a ball whose twist axis is its first
-// child's bone, the roots free.
-inline std::vector<JointLimit> body_limits(const Skeleton& s) {
+// Limits a body might have: knees and elbows hinges (if `hinges`, else balls) about the axis
+// perpendicular to their bone and to z, every other non-root joint a ball (swing 1.3 rad,
+// twist +-0.7 rad) whose twist axis is its first child's bone, the roots free.
+inline std::vector<JointLimit> body_limits(const Skeleton& s, bool hinges = true) {
   std::vector<JointLimit> limits(static_cast<std::size_t>(s.joint_count()), FreeJoint{});
   for (int j = 0; j < s.joint_count(); ++j) {
     if (s.parents()[static_cast<std::size_t>(j)] < 0) continue;
@@ -75,7 +75,7 @@ inline std::vector<JointLimit> body_limits(const Skeleton& s) {
       std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
       return lower.find(word) != std::string::npos;
     };
-    if (contains("knee") || contains("elbow")) {
+    if (hinges && (contains("knee") || contains("elbow"))) {
       limits[static_cast<std::size_t>(j)] = HingeLimit{
           bone.cross(Vec3::UnitZ()).norm() > 0.5 ? Vec3(bone.cross(Vec3::UnitZ()).normalized())
                                                  : Vec3::UnitX(),
