@@ -17,7 +17,7 @@ namespace {
 // times) and then stops.
 constexpr double kStallRatio = 1e-6;
 constexpr int kStallIterations = 3;
-constexpr int kMaxKicks = 2;
+constexpr int kMaxKicks = 10;
 // The bend of a kick: the angle the chain solvers kick a stalled chain by (ik_common.h).
 constexpr double kKickAngle = 0.2;
 
