@@ -42,7 +42,10 @@ struct CcdTreeWorkspace {
 /// the shortest arc for one effector (the lab's CCD), the best-fit rotation (Wahba's problem)
 /// for several. The turn is constrained by the joint's limit right there and forward
 /// kinematics re-run on its subtree before the sweep goes on. An effector joint with an
-/// orientation target and no effectors below takes that orientation, within its limit.
+/// orientation target and no effectors below takes that orientation, within its limit. A
+/// hinge joint turns by the best rotation about its axis instead (its only freedom). Stopping
+/// and the best pose returned: as solve_fabrik_tree(). On a one-branch skeleton without limits
+/// a sweep turns the joints as the chain's solve_ccd() does.
 /// Returns the validate_tree_ik() or settings error for invalid input.
 Result<TreeIkResult> solve_ccd_tree(const Skeleton& skeleton, const TreeIkProblem& problem,
                                     const CcdTreeSettings& settings, CcdTreeWorkspace& workspace,

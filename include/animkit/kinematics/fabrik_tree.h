@@ -51,8 +51,24 @@ struct FabrikTreeWorkspace {
 ///    rotation; so bones stay rigid, the next pass starts from a pose the limits allow, and
 ///    subtrees without effectors turn rigidly with their parent. An effector joint with an
 ///    orientation target and no effectors below takes that orientation, within its limit.
+/// Two refinements of the forward pass, both for limits: a hinge joint turns by the best
+/// rotation about its axis (its only freedom); a joint aiming a single child also chooses its
+/// twist about that bone (which moves no child) to bring the grandchildren toward their asked
+/// positions, trying eight twists under limits, so that a hinge below can bend in the plane of
+/// its target.
+/// The solve starts by moving the pose inside the limits, stops when converged, at the cap, or
+/// when iterations stop changing anything (after bending the joints above the effectors a
+/// little, a few times, to leave singular or stuck poses), and returns the best pose seen.
 /// On a one-branch skeleton without limits the passes place the joints as the chain's
-/// solve_fabrik() does. Returns the validate_tree_ik() or settings error for invalid input.
+/// solve_fabrik() does (the rotations keep the previous pose's twist, like the chain's
+/// FabrikRotations::from_previous). Returns the validate_tree_ik() or settings error for
+/// invalid input.
+///
+/// Limits of the method: the backward pass does not know the limits, so with hinged knees and
+/// elbows the passes can settle in a fixed point short of a target the limits allow; and
+/// several effectors pulling one rigid sub-base converge slowly, so 100 iterations reach fewer
+/// jointly reachable targets than 1000 (the tests measure both).
+
 Result<TreeIkResult> solve_fabrik_tree(const Skeleton& skeleton, const TreeIkProblem& problem,
                                        const FabrikTreeSettings& settings,
                                        FabrikTreeWorkspace& workspace, SkeletonPose& pose);
