@@ -92,7 +92,7 @@ class FabrikTreeIteration final : public detail::TreeIteration {
           const Vec3 to = ws_.desired[c] - pose.global_positions[j];
           const double length = pose.local_translations[c].norm();
           const double norm = to.norm();
-          if (norm == 0.0) continue;
+          if (norm == 0.0 || length == 0.0) continue;  // no direction to aim
           fit.add(current * pose.local_translations[c], to * (length / norm),
                   scratch.subtree_weight[c]);
           aimed = static_cast<int>(c);
