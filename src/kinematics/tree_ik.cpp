@@ -15,10 +15,6 @@ std::string effector_name(std::size_t e) {
   return "effector " + std::to_string(e);
 }
 
-bool finite(const Vec3& v) {
-  return v.allFinite();
-}
-
 }  // namespace
 
 std::optional<Error> validate_tree_ik(const Skeleton& skeleton, const TreeIkProblem& problem,
@@ -30,30 +26,36 @@ std::optional<Error> validate_tree_ik(const Skeleton& skeleton, const TreeIkProb
                  " joints, the skeleton " + std::to_string(n)};
   }
   if (problem.effectors.empty()) return Error{"IK needs at least one effector"};
-  std::vector<char> taken(n, 0);
+  // Solvers run this on every call and must not allocate then: names are built, and repeated
+  // joints searched for (a quadratic scan over a handful of effectors), only on the way to an
+  // error.
   for (std::size_t e = 0; e < problem.effectors.size(); ++e) {
     const Effector& effector = problem.effectors[e];
-    const std::string name = effector_name(e);
     if (effector.joint < 0 || static_cast<std::size_t>(effector.joint) >= n) {
-      return Error{name + " names joint " + std::to_string(effector.joint) +
+      return Error{effector_name(e) + " names joint " + std::to_string(effector.joint) +
                    ", the skeleton has joints 0 to " + std::to_string(n - 1)};
     }
-    const std::string& joint = skeleton.names()[static_cast<std::size_t>(effector.joint)];
-    if (skeleton.parents()[static_cast<std::size_t>(effector.joint)] < 0)
-      return Error{name + " is on the root " + joint + ", which IK never moves"};
-    if (taken[static_cast<std::size_t>(effector.joint)])
-      return Error{name + ": joint " + joint + " has two effectors"};
-    taken[static_cast<std::size_t>(effector.joint)] = 1;
-    if (!finite(effector.position) ||
+    const auto joint_index = static_cast<std::size_t>(effector.joint);
+    const auto name = [&] { return effector_name(e) + " (" + skeleton.names()[joint_index] + ")"; };
+    if (skeleton.parents()[joint_index] < 0) {
+      return Error{effector_name(e) + " is on the root " + skeleton.names()[joint_index] +
+                   ", which IK never moves"};
+    }
+    for (std::size_t f = 0; f < e; ++f) {
+      if (problem.effectors[f].joint == effector.joint) {
+        return Error{effector_name(e) + ": joint " + skeleton.names()[joint_index] +
+                     " has two effectors"};
+      }
+    }
+    if (!is_finite(effector.position) ||
         effector.position.cwiseAbs().maxCoeff() > kMaxTargetCoordinate)
-      return Error{name + " (" + joint + "): the target position must be finite and within 1e9"};
-    if (effector.orientation && !(effector.orientation->coeffs().allFinite() &&
+      return Error{name() + ": the target position must be finite and within 1e9"};
+    if (effector.orientation && !(is_finite(*effector.orientation) &&
                                   std::abs(effector.orientation->norm() - 1.0) <= 1e-6)) {
-      return Error{name + " (" + joint + "): the target orientation must be a unit quaternion"};
+      return Error{name() + ": the target orientation must be a unit quaternion"};
     }
     if (!std::isfinite(effector.weight) || effector.weight <= 0.0) {
-      return Error{name + " (" + joint + "): the weight must be > 0, got " +
-                   format_number(effector.weight)};
+      return Error{name() + ": the weight must be > 0, got " + format_number(effector.weight)};
     }
   }
   if (!problem.limits.empty()) {
@@ -96,6 +98,21 @@ bool tree_ik_reachable(const Skeleton& skeleton, const SkeletonPose& pose,
       return false;
   }
   return true;
+}
+
+void TreeIkScratch::resize(int joint_count) {
+  const auto n = static_cast<std::size_t>(joint_count);
+  subtree_weight.resize(n);
+  below_weight.resize(n);
+  effector_of.resize(n);
+  best_local_rotations.resize(n);
+  marks.resize(n);
+}
+
+bool TreeIkScratch::fits(int joint_count) const {
+  const auto n = static_cast<std::size_t>(joint_count);
+  return subtree_weight.size() == n && below_weight.size() == n && effector_of.size() == n &&
+         best_local_rotations.size() == n && marks.size() == n;
 }
 
 }  // namespace animkit

@@ -9,7 +9,10 @@
 //
 // so the viewer and the CLI switch between them with TreeIkSolverKind. The pose is read as the
 // starting guess and overwritten with the solution (FK already run). Roots never move: their
-// local translations and rotations are kept; every other joint may turn (never translate).
+// local translations are kept. Every joint, roots included, may turn (never translate): the
+// lab's chain turns its root joint to swing the first bone, and tree_ik_reachable() counts the
+// root's child bones in the reach. A root that must not turn gets a limit with no range (e.g.
+// a BallLimit with swing_angle = 0 and a zero twist range).
 //
 // Joint limits apply to a joint's rotation relative to its rest rotation,
 //   q_rel = rest_rotations[i]^-1 * local_rotations[i]
@@ -17,6 +20,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "animkit/core/result.h"
 #include "animkit/core/types.h"
@@ -71,6 +75,21 @@ TreeIkErrors tree_ik_errors(const SkeletonPose& pose, std::span<const Effector> 
 /// Whether every target is within reach (TreeIkResult::reachable).
 bool tree_ik_reachable(const Skeleton& skeleton, const SkeletonPose& pose,
                        std::span<const Effector> effectors);
+
+/// Per-joint scratch that every tree solver's workspace holds; its contents are the solver's
+/// business between calls. Sized once per skeleton, so a solve does not allocate.
+struct TreeIkScratch {
+  std::vector<double> subtree_weight;      ///< sum of effector weights at joint i and below
+  std::vector<double> below_weight;        ///< sum of effector weights strictly below joint i
+  std::vector<int> effector_of;            ///< index into the effectors of joint i's, or -1
+  std::vector<Quat> best_local_rotations;  ///< the best pose seen during the solve
+  std::vector<char> marks;                 ///< per-joint flags (e.g. "in this subtree")
+
+  /// Sizes every array for `joint_count` joints (allocates only when the size changes).
+  void resize(int joint_count);
+  /// Whether the arrays have `joint_count` entries.
+  bool fits(int joint_count) const;
+};
 
 /// Joint i's rotation relative to its rest rotation (what its limit constrains).
 inline Quat relative_to_rest(const Skeleton& skeleton, const SkeletonPose& pose, int joint) {

@@ -1,0 +1,76 @@
+#pragma once
+// FABRIK for skeleton trees with several end effectors (issue 12), after Aristidou & Lasenby
+// 2011, "FABRIK: a fast, iterative solver for the inverse kinematics problem", section 5
+// (multiple end effectors): sub-bases placed at the centroid of what their branches ask for.
+// Joint limits are enforced inside every forward pass, orientation targets turn the effector
+// joints themselves. Signature shared by every tree solver (tree_ik.h).
+#include <optional>
+#include <vector>
+
+#include "animkit/core/result.h"
+#include "animkit/core/types.h"
+#include "animkit/kinematics/tree_ik.h"
+
+namespace animkit {
+
+/// Settings of solve_fabrik_tree(); the defaults are the lab's.
+struct FabrikTreeSettings {
+  /// Cap on backward-forward passes; >= 1. Default 100 (the lab's).
+  int max_iterations = 100;
+  /// Converged when every effector joint is within this distance of its target (scene units,
+  /// world space); > 0. Default 1e-4 (the lab's).
+  double tolerance = 1e-4;
+  /// ... and within this angle of its target orientation, when it has one (radians); > 0.
+  double angular_tolerance = 1e-3;
+
+  /// The first problem ("tolerance must be a positive finite number, got -1"), or nothing.
+  std::optional<Error> validate() const;
+};
+
+/// Caller-owned scratch of solve_fabrik_tree(): sized for a skeleton once (by resize() or by
+/// the first solve), after which solves on that skeleton allocate nothing. Its contents
+/// between solves mean nothing; a reused workspace gives the same bits as a fresh one.
+struct FabrikTreeWorkspace {
+  TreeIkScratch scratch;
+  std::vector<Vec3> desired;           ///< backward pass: where each joint is asked to go
+  std::vector<double> desired_weight;  ///< the weights summed into `desired`
+
+  void resize(const Skeleton& skeleton);
+};
+
+/// FABRIK on a tree. One iteration:
+///  - backward pass, effectors toward roots: an effector joint is asked to its target; every
+///    other joint with effectors below it to the weighted centroid (weights: the effector
+///    weights of each branch) of the positions its children's branches ask for, each at bone
+///    length from that child's new position toward the joint's current position; a sub-base
+///    (several such children) is the centroid of its branches (A&L 2011, section 5);
+///  - forward pass, roots outward (roots stay where they are): each joint with effectors below
+///    turns so that its children's bones point at their backward-pass positions (the shortest
+///    arc for one child, the weighted best-fit rotation for several), the turn is constrained
+///    by the joint's limit right there, and the children are placed from the constrained
+///    rotation; so bones stay rigid, the next pass starts from a pose the limits allow, and
+///    subtrees without effectors turn rigidly with their parent. An effector joint with an
+///    orientation target and no effectors below takes that orientation, within its limit.
+/// Two refinements of the forward pass, both for limits: a hinge joint turns by the best
+/// rotation about its axis (its only freedom); a joint aiming a single child also chooses its
+/// twist about that bone (which moves no child) to bring the grandchildren toward their asked
+/// positions, trying eight twists under limits, so that a hinge below can bend in the plane of
+/// its target.
+/// The solve starts by moving the pose inside the limits, stops when converged, at the cap, or
+/// when iterations stop changing anything (after bending the joints above the effectors a
+/// little, a few times, to leave singular or stuck poses), and returns the best pose seen.
+/// On a one-branch skeleton without limits the passes place the joints as the chain's
+/// solve_fabrik() does (the rotations keep the previous pose's twist, like the chain's
+/// FabrikRotations::from_previous). Returns the validate_tree_ik() or settings error for
+/// invalid input.
+///
+/// Limits of the method: the backward pass does not know the limits, so with hinged knees and
+/// elbows the passes can settle in a fixed point short of a target the limits allow; and
+/// several effectors pulling one rigid sub-base converge slowly, so 100 iterations reach fewer
+/// jointly reachable targets than 1000 (the tests measure both).
+
+Result<TreeIkResult> solve_fabrik_tree(const Skeleton& skeleton, const TreeIkProblem& problem,
+                                       const FabrikTreeSettings& settings,
+                                       FabrikTreeWorkspace& workspace, SkeletonPose& pose);
+
+}  // namespace animkit

@@ -1,0 +1,231 @@
+#include "animkit/kinematics/fabrik_tree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "tree_ik_common.h"
+
+namespace animkit {
+
+namespace {
+
+detail::TreeLoopSettings loop_settings(const FabrikTreeSettings& settings) {
+  return {settings.max_iterations, settings.tolerance, settings.angular_tolerance};
+}
+
+class FabrikTreeIteration final : public detail::TreeIteration {
+ public:
+  FabrikTreeIteration(const Skeleton& skeleton, const TreeIkProblem& problem,
+                      FabrikTreeWorkspace& workspace)
+      : skeleton_(skeleton), problem_(problem), ws_(workspace) {}
+
+  void iterate(SkeletonPose& pose) override {
+    backward_pass(pose);
+    forward_pass(pose);
+  }
+
+ private:
+  // A&L 2011, Alg. 1's backward loop, per branch: joint i goes to
+  //   p_i' = p_{i+1}' + len_{i+1} (p_i - p_{i+1}') / |p_i - p_{i+1}'|
+  // and a joint asked by several branches (a sub-base) or also carrying an effector goes to
+  // the weighted centroid of the asked positions (A&L 2011, section 5). Roots are not moved,
+  // so nothing is asked of them.
+  void backward_pass(const SkeletonPose& pose) {
+    const auto& p = pose.global_positions;
+    auto& desired = ws_.desired;
+    auto& weight = ws_.desired_weight;
+    std::fill(desired.begin(), desired.end(), Vec3::Zero());
+    std::fill(weight.begin(), weight.end(), 0.0);
+    for (const Effector& e : problem_.effectors) {
+      const auto j = static_cast<std::size_t>(e.joint);
+      desired[j] = e.weight * e.position;
+      weight[j] = e.weight;
+    }
+    const auto& subtree_weight = ws_.scratch.subtree_weight;
+    // Children before parents: a joint's sum is complete when it is reached.
+    for (int i = skeleton_.joint_count() - 1; i >= 0; --i) {
+      const auto j = static_cast<std::size_t>(i);
+      const int parent = skeleton_.parents()[j];
+      if (subtree_weight[j] <= 0.0 || parent < 0) continue;
+      desired[j] /= weight[j];
+      const auto up = static_cast<std::size_t>(parent);
+      const double length = pose.local_translations[j].norm();
+      Vec3 toward = p[up] - desired[j];
+      // The joint's current bone gives the direction when the line is undefined.
+      if (toward.squaredNorm() == 0.0) toward = p[up] - p[j];
+      const double norm = toward.norm();
+      const Vec3 asked = norm > 0.0 ? Vec3(desired[j] + toward * (length / norm)) : desired[j];
+      desired[up] += subtree_weight[j] * asked;
+      weight[up] += subtree_weight[j];
+    }
+  }
+
+  // A&L 2011, Alg. 1's forward loop as rotations: p_{i+1}' = p_i' + len (p_{i+1}' - p_i') /
+  // |..| is the child placed by turning joint i by the shortest arc onto that direction; with
+  // several children, by the weighted best-fit rotation. The limit is applied to that turn
+  // before the children are placed (this loop is forward kinematics with the rotations
+  // chosen on the way).
+  void forward_pass(SkeletonPose& pose) {
+    const auto& scratch = ws_.scratch;
+    const auto& begin = skeleton_.child_begin();
+    const auto& children = skeleton_.child_list();
+    for (int i = 0; i < skeleton_.joint_count(); ++i) {
+      const auto j = static_cast<std::size_t>(i);
+      const int parent = skeleton_.parents()[j];
+      const Quat above = detail::parent_rotation(skeleton_, pose, i);
+      if (parent < 0) {
+        pose.global_positions[j] = pose.local_translations[j];
+      } else {
+        const auto up = static_cast<std::size_t>(parent);
+        pose.global_positions[j] = pose.global_positions[up] + above * pose.local_translations[j];
+      }
+      Quat& local = pose.local_rotations[j];
+      if (scratch.below_weight[j] > 0.0) {
+        const Quat current = above * local;
+        detail::BestFitRotation fit;
+        int aimed = -1;
+        for (int k = begin[j]; k < begin[j + 1]; ++k) {
+          const auto c = static_cast<std::size_t>(children[static_cast<std::size_t>(k)]);
+          if (scratch.subtree_weight[c] <= 0.0) continue;
+          const Vec3 to = ws_.desired[c] - pose.global_positions[j];
+          const double length = pose.local_translations[c].norm();
+          const double norm = to.norm();
+          if (norm == 0.0 || length == 0.0) continue;  // no direction to aim
+          fit.add(current * pose.local_translations[c], to * (length / norm),
+                  scratch.subtree_weight[c]);
+          aimed = static_cast<int>(c);
+        }
+        Quat turned = detail::best_turn(fit, skeleton_, problem_.limits, i, above) * current;
+        if (fit.count() == 1 && !detail::is_hinge(problem_.limits, i))
+          turned = twist_toward_grandchildren(pose, i, aimed, above, turned);
+        local = detail::limited_local(skeleton_, problem_.limits, i, above.conjugate() * turned);
+      } else if (const int e = scratch.effector_of[j]; e >= 0) {
+        const auto& orientation = problem_.effectors[static_cast<std::size_t>(e)].orientation;
+        if (orientation) {
+          local = detail::limited_local(skeleton_, problem_.limits, i,
+                                        above.conjugate() * *orientation);
+        }
+      }
+      pose.global_rotations[j] = above * local;
+    }
+  }
+
+  // A joint aiming one child's bone has one degree of freedom left, the twist about that bone,
+  // which moves no child but decides where the grandchildren can go. Without limits it is the
+  // weighted least-squares rotation (the child keeping its local rotation) in the plane
+  // perpendicular to the bone axis a,
+  //   angle = atan2(sum_g w_g a . (u_g x v_g), sum_g w_g u_g . v_g),
+  // with u_g, v_g the grandchild's current and asked offsets from the joint projected on that
+  // plane. With limits that angle and seven more, an eighth of a turn apart,
+  // are each tried: the joint turned and limited, the child aimed and limited as the pass
+  // will do it, and the twist whose grandchildren land nearest their asked positions wins.
+  // Otherwise a hinge below stays in whatever plane the shortest arcs leave it, bending the
+  // wrong way or not at all, and targets off that plane are never reached.
+  Quat twist_toward_grandchildren(const SkeletonPose& pose, int joint, int child, const Quat& above,
+                                  const Quat& rotation) const {
+    const auto j = static_cast<std::size_t>(joint);
+    const auto c = static_cast<std::size_t>(child);
+    const Vec3 bone = rotation * pose.local_translations[c];
+    const auto& begin = skeleton_.child_begin();
+    if (bone.squaredNorm() == 0.0 || begin[c] == begin[c + 1]) return rotation;
+    const Vec3 axis = bone.normalized();
+    const Vec3& at = pose.global_positions[j];
+    const Quat child_rotation = rotation * pose.local_rotations[c];
+    double sine = 0.0, cosine = 0.0;
+    for (int k = begin[c]; k < begin[c + 1]; ++k) {
+      const auto g = static_cast<std::size_t>(skeleton_.child_list()[static_cast<std::size_t>(k)]);
+      const double w = ws_.scratch.subtree_weight[g];
+      if (w <= 0.0) continue;
+      Vec3 u = bone + child_rotation * pose.local_translations[g];
+      Vec3 v = ws_.desired[g] - at;
+      u -= axis * axis.dot(u);
+      v -= axis * axis.dot(v);
+      sine += w * axis.dot(u.cross(v));
+      cosine += w * u.dot(v);
+    }
+    const double angle = sine == 0.0 && cosine >= 0.0 ? 0.0 : std::atan2(sine, cosine);
+    if (problem_.limits.empty()) return Quat(Eigen::AngleAxisd(angle, axis)) * rotation;
+    constexpr int kCandidates = 8;
+    Quat best = rotation;
+    double best_error = std::numeric_limits<double>::infinity();
+    for (int m = 0; m < kCandidates; ++m) {
+      const double turn = angle + 2.0 * std::numbers::pi * m / kCandidates;
+      const Quat candidate = Quat(Eigen::AngleAxisd(turn, axis)) * rotation;
+      const double error = aim_error(pose, joint, child, above, candidate);
+      if (error < best_error) {
+        best_error = error;
+        best = candidate;
+      }
+    }
+    return best;
+  }
+
+  // How far the child and grandchildren land from their asked positions (weighted squares)
+  // when the joint takes world rotation `rotation` (then limited) and the child aims its
+  // children as the forward pass will (best fit, then limited).
+  double aim_error(const SkeletonPose& pose, int joint, int child, const Quat& above,
+                   const Quat& rotation) const {
+    const auto j = static_cast<std::size_t>(joint);
+    const auto c = static_cast<std::size_t>(child);
+    const auto& weight = ws_.scratch.subtree_weight;
+    const Quat joint_rotation = above * detail::limited_local(skeleton_, problem_.limits, joint,
+                                                              above.conjugate() * rotation);
+    const Vec3 at_child = pose.global_positions[j] + joint_rotation * pose.local_translations[c];
+    const Quat current = joint_rotation * pose.local_rotations[c];
+    const auto& begin = skeleton_.child_begin();
+    detail::BestFitRotation fit;
+    for (int k = begin[c]; k < begin[c + 1]; ++k) {
+      const auto g = static_cast<std::size_t>(skeleton_.child_list()[static_cast<std::size_t>(k)]);
+      if (weight[g] <= 0.0) continue;
+      const Vec3 to = ws_.desired[g] - at_child;
+      const double norm = to.norm();
+      if (norm == 0.0) continue;
+      fit.add(current * pose.local_translations[g], to * (pose.local_translations[g].norm() / norm),
+              weight[g]);
+    }
+    const Quat turn = detail::best_turn(fit, skeleton_, problem_.limits, child, joint_rotation);
+    const Quat child_rotation =
+        joint_rotation * detail::limited_local(skeleton_, problem_.limits, child,
+                                               joint_rotation.conjugate() * turn * current);
+    double error = weight[c] * (at_child - ws_.desired[c]).squaredNorm();
+    for (int k = begin[c]; k < begin[c + 1]; ++k) {
+      const auto g = static_cast<std::size_t>(skeleton_.child_list()[static_cast<std::size_t>(k)]);
+      if (weight[g] <= 0.0) continue;
+      const Vec3 placed = at_child + child_rotation * pose.local_translations[g];
+      error += weight[g] * (placed - ws_.desired[g]).squaredNorm();
+    }
+    return error;
+  }
+
+  const Skeleton& skeleton_;
+  const TreeIkProblem& problem_;
+  FabrikTreeWorkspace& ws_;
+};
+
+}  // namespace
+
+std::optional<Error> FabrikTreeSettings::validate() const {
+  return detail::validate_tree_loop_settings(loop_settings(*this));
+}
+
+void FabrikTreeWorkspace::resize(const Skeleton& skeleton) {
+  const int n = skeleton.joint_count();
+  scratch.resize(n);
+  desired.resize(static_cast<std::size_t>(n));
+  desired_weight.resize(static_cast<std::size_t>(n));
+}
+
+Result<TreeIkResult> solve_fabrik_tree(const Skeleton& skeleton, const TreeIkProblem& problem,
+                                       const FabrikTreeSettings& settings,
+                                       FabrikTreeWorkspace& workspace, SkeletonPose& pose) {
+  const detail::TreeLoopSettings loop = loop_settings(settings);
+  if (auto error = detail::check_tree_ik(skeleton, problem, pose, loop))
+    return fail(error->message);
+  workspace.resize(skeleton);
+  FabrikTreeIteration iteration(skeleton, problem, workspace);
+  return detail::run_tree_ik(skeleton, problem, loop, workspace.scratch, pose, iteration);
+}
+
+}  // namespace animkit
