@@ -46,9 +46,11 @@ test-sanitize: deps
 	$(CMAKE) --build $(SANITIZE_DIR) -j $(JOBS)
 	# A failing test gets a second run: LeakSanitizer's exit-time tracer has crashed once (signal
 	# 11 inside the sanitizer, with Mesa loaded) on a passing test. A real failure fails twice.
-	# The built-in scenes' whole-run audits (minutes each in Release) run in test-release only.
+	# The built-in scenes' whole-run audits (minutes each in Release) and the tree IK solvers'
+	# reach statistics (hundreds of solves to 1000 iterations each) run in test-release only;
+	# the sanitizer still runs every solver's limit, bone and determinism tests.
 	cd $(SANITIZE_DIR) && ctest --output-on-failure -j $(JOBS) --repeat until-pass:2 \
-	  -E 'BuiltinSceneAudit'
+	  -E 'BuiltinSceneAudit|ReachesJointlyReachableTargets'
 
 test: test-release test-sanitize
 
