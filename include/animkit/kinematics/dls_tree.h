@@ -1,0 +1,88 @@
+#pragma once
+// Jacobian damped least squares on skeleton trees (issue 12), with several effectors, each with
+// a position target, an optional orientation target and a weight, and joint limits enforced
+// inside every iteration. Two step rules share the iteration:
+//   DLS  (Wampler 1986; Buss 2004 "Introduction to inverse kinematics", eq. 11):
+//        dtheta = J^T (J J^T + lambda^2 I)^-1 e
+//   SDLS (Buss & Kim 2005, "Selectively damped least squares for inverse kinematics", sec. 4):
+//        each singular direction's step is clamped by its own gamma_i <= gamma_max, so poorly
+//        conditioned directions take small steps without damping the well conditioned ones.
+// The signature is the tree solvers' shared one (tree_ik.h).
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <optional>
+#include <vector>
+
+#include "animkit/core/result.h"
+#include "animkit/core/types.h"
+#include "animkit/kinematics/skeleton.h"
+#include "animkit/kinematics/tree_ik.h"
+
+namespace animkit {
+
+/// Which step rule solve_dls_tree() takes.
+enum class DlsMethod {
+  damped,     ///< DLS with the fixed damping `lambda`
+  selective,  ///< SDLS, per-singular-value damping clamped by `max_step_angle` (gamma_max)
+};
+
+/// Settings of solve_dls_tree(); the defaults suit skeletons in metres (a human ~1.7 m tall).
+struct DlsSettings {
+  DlsMethod method = DlsMethod::damped;
+  int max_iterations = 100;  ///< DLS steps at most, >= 1
+  double tolerance = 1e-4;   ///< largest effector position error to stop at (scene units), > 0
+  /// Largest effector orientation error to stop at (radians), > 0; only effectors with an
+  /// orientation target count.
+  double angular_tolerance = 1e-4;
+  /// DLS damping lambda in scene units, >= 0. It bounds the step where J is near singular
+  /// (|dtheta| <= |e| / (2 lambda) per singular direction) and slows convergence only along
+  /// directions whose singular value (about a lever arm in scene units) is below lambda; 0.05 m
+  /// is a few percent of a limb's length. Unused by SDLS.
+  double lambda = 0.05;
+  /// Largest joint rotation per iteration, radians, in (0, pi]: the whole step is scaled down so
+  /// that no joint's rotation-vector component exceeds it (Buss & Kim's ClampMaxAbs). For SDLS
+  /// it is gamma_max (the paper uses pi / 4).
+  double max_step_angle = 0.785398163397448;  // pi / 4
+  /// Scene units per radian that weigh an orientation error against a position error in the
+  /// least squares (rows of an orientation target are scaled by weight * this), > 0.
+  double orientation_weight = 1.0;
+
+  /// The first problem ("DLS max_iterations must be >= 1, got 0"), or nothing.
+  std::optional<Error> validate() const;
+};
+
+/// Scratch memory of solve_dls_tree(), owned by the caller and reused across calls. The solver
+/// sizes it for the skeleton and effectors on first use; later calls with the same skeleton
+/// size, effector count and orientation-target count allocate nothing. Its contents between
+/// calls carry no state: a reused workspace gives the same bits as a fresh one.
+struct DlsWorkspace {
+  Eigen::MatrixXd jacobian;  ///< rows: weighted effector errors; columns: 3 per joint (world)
+  Eigen::VectorXd error;     ///< weighted effector errors (positions, then orientations)
+  Eigen::MatrixXd jjt;       ///< J J^T (+ lambda^2 I for DLS)
+  Eigen::LLT<Eigen::MatrixXd> llt;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;  ///< SDLS: J J^T = U S^2 U^T
+  Eigen::MatrixXd jtu;                                   ///< SDLS: J^T U (columns sigma_i v_i)
+  Eigen::VectorXd solve;                                 ///< (J J^T + lambda^2 I)^-1 e
+  Eigen::VectorXd step;                                  ///< dtheta, 3 per joint (world)
+  Eigen::VectorXd step_i;                                ///< SDLS: one singular direction's
+  Eigen::VectorXd column_norms;                          ///< SDLS: rho_j, 3 per joint
+  /// Per joint: the unit axis (parent frame) along which the last iteration's limit pushed the
+  /// joint back, or zero when the limit was not active.
+  std::vector<Vec3> pushed_back;
+};
+
+/// DLS or SDLS on a tree, same contract as every tree solver (tree_ik.h): the pose is the
+/// starting guess and is overwritten with the solution (FK run); roots keep their rotation and
+/// translation. Each iteration builds the Jacobian of the weighted effector errors (position
+/// rows omega x (p_e - p_j), orientation rows the identity, for every non-root joint j above
+/// effector e; a hinge's columns only along its axis), takes the step, turns each joint's world
+/// rotation by its rotation vector and constrains it by its limit. A joint its limit pushed back
+/// in the last iteration may not move along that push's outward direction in this one (its
+/// columns lose that component), so it does not keep pushing against the limit.
+/// Errors: validate_tree_ik's or settings.validate()'s message; the pose is then untouched.
+Result<TreeIkResult> solve_dls_tree(const Skeleton& skeleton, const TreeIkProblem& problem,
+                                    const DlsSettings& settings, DlsWorkspace& workspace,
+                                    SkeletonPose& pose);
+
+}  // namespace animkit
