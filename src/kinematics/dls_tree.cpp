@@ -59,7 +59,8 @@ void size_workspace(DlsWorkspace& ws, int joints, int rows) {
   ws.step.resize(cols);
   ws.step_i.resize(cols);
   ws.column_norms.resize(cols);
-  ws.pushed_back.assign(static_cast<std::size_t>(joints), Vec3::Zero());
+  ws.pushed_back.assign(static_cast<std::size_t>(joints), {Vec3::Zero(), Vec3::Zero()});
+  ws.blocked.assign(static_cast<std::size_t>(joints), 0);
 }
 
 // Rows of the weighted error e and its Jacobian J (d e / d omega_j, omega_j joint j's world
@@ -94,26 +95,34 @@ void build_rows(const Skeleton& skeleton, const TreeIkProblem& problem, const Dl
   }
 }
 
-// Restricts joint j's columns to the motions it may make this iteration: a hinge's to its axis
-// (world axis = global rotation * rest-frame axis, since q_rel is a rotation about it), and a
-// joint pushed back by its limit loses the component along the push (`blocked`).
-void restrict_columns(const Skeleton& skeleton, const TreeIkProblem& problem,
-                      const SkeletonPose& pose, int j, bool blocked, DlsWorkspace& ws) {
-  const auto ju = static_cast<std::size_t>(j);
-  Eigen::Matrix3d keep = Eigen::Matrix3d::Identity();
+// A hinge moves only about its axis: its columns keep that component alone (world axis =
+// global rotation * rest-frame axis, since q_rel is a rotation about it).
+void restrict_to_hinge(const TreeIkProblem& problem, const SkeletonPose& pose, int j,
+                       DlsWorkspace& ws) {
   const JointLimit* limit = limit_of(problem, j);
-  if (limit != nullptr) {
-    if (const auto* hinge = std::get_if<HingeLimit>(limit)) {
-      const Vec3 a = (pose.global_rotations[ju] * hinge->axis).normalized();
-      keep = a * a.transpose();
-    }
+  const auto* hinge = limit != nullptr ? std::get_if<HingeLimit>(limit) : nullptr;
+  if (hinge == nullptr) return;
+  const Vec3 a = (pose.global_rotations[static_cast<std::size_t>(j)] * hinge->axis).normalized();
+  ws.jacobian.middleCols<3>(3 * j) = ws.jacobian.middleCols<3>(3 * j) * (a * a.transpose());
+}
+
+// Takes push axis k of joint j (world `inward`) out of its columns, orthogonal to the axis
+// blocked before it, so that two blocked axes remove exactly their span.
+void block_axis(const SkeletonPose& pose, const Skeleton& skeleton, int j, unsigned k,
+                DlsWorkspace& ws) {
+  const auto ju = static_cast<std::size_t>(j);
+  const Quat& g = pose.global_rotations[static_cast<std::size_t>(skeleton.parents()[ju])];
+  Vec3 r = g * ws.pushed_back[ju][k];
+  if (ws.blocked[ju] & (1u << (1 - k))) {
+    const Vec3 other = (g * ws.pushed_back[ju][1 - k]).normalized();
+    r -= r.dot(other) * other;
   }
-  if (blocked) {
-    const int parent = skeleton.parents()[ju];
-    const Vec3 r = pose.global_rotations[static_cast<std::size_t>(parent)] * ws.pushed_back[ju];
-    keep -= (keep * r) * r.transpose();
-  }
-  ws.jacobian.middleCols<3>(3 * j) = ws.jacobian.middleCols<3>(3 * j) * keep;
+  ws.blocked[ju] = static_cast<unsigned char>(ws.blocked[ju] | (1u << k));
+  const double n = r.norm();
+  if (n < 1e-9) return;  // already out of the columns
+  r /= n;
+  auto cols = ws.jacobian.middleCols<3>(3 * j);
+  cols -= (cols * r) * r.transpose();
 }
 
 // Buss & Kim 2005's ClampMaxAbs: scales w so that its largest |component| is at most d.
@@ -177,9 +186,57 @@ void take_step(const DlsSettings& s, DlsWorkspace& ws) {
   }
 }
 
+// Smallest limit correction (radians) that counts as a push: well above rounding.
+constexpr double kPushThreshold = 1e-12;
+
+// The axes (parent frame, pointing inward) about which constraining turned `local` back from
+// `wanted`: the gradients, in angular velocity, of the limit's active constraints. A ball's
+// swing and twist are separate, so a joint in a corner of its limit is blocked in both. In the
+// rest frame (q = rest^-1 L, angular velocity w with dq/dt = w q / 2, twist axis a, bone
+// b = q a = swing a):
+//   swing angle: d(swing)/dt = w . (a x b) / |a x b|, the axis of the swing correction;
+//   twist angle: q = s(b) t with s the shortest arc a -> b, so w = w_s + (dtwist/dt) b, and the
+//   shortest arc's own spin about b gives dtwist/dt = w . (b + (a - (a.b) b) / (1 + a.b)).
+// Turning a bone by w perpendicular to it therefore changes its twist too; blocking only
+// rotations about the bone lets the twist run into its limit again every iteration. Other
+// limits: the whole correction's axis. All mapped to the parent frame by `rest`.
+std::array<Vec3, 2> push_axes(const JointLimit& limit, const Quat& rest, const Quat& wanted,
+                              const Quat& local) {
+  std::array<Vec3, 2> axes{Vec3::Zero(), Vec3::Zero()};
+  // Corrections below rounding size are no push (their axes would be noise).
+  auto unit = [](const Vec3& v) {
+    return v.norm() > kPushThreshold ? Vec3(v.normalized()) : Vec3::Zero();
+  };
+  if (const auto* ball = std::get_if<BallLimit>(&limit)) {
+    const Vec3 a = ball->twist_axis.normalized();
+    const SwingTwist w = swing_twist(rest.conjugate() * wanted, a);
+    const SwingTwist c = swing_twist(rest.conjugate() * local, a);
+    axes[0] = unit(rest * rotation_vector(c.swing * w.swing.conjugate()));
+    const double delta = rotation_vector(c.twist * w.twist.conjugate()).dot(a);
+    const Vec3 b = c.swing * a;
+    const double cos_swing = a.dot(b);
+    if (std::abs(delta) > kPushThreshold && cos_swing > -1.0 + 1e-9) {
+      const Vec3 gradient = b + (a - cos_swing * b) / (1.0 + cos_swing);
+      axes[1] = (delta > 0.0 ? 1.0 : -1.0) * unit(rest * gradient);
+    }
+    return axes;
+  }
+  axes[0] = unit(rotation_vector(local * wanted.conjugate()));
+  return axes;
+}
+
+// Whether the joint rests on its limit along the inward axis `inward` (parent frame): turning
+// it outward by kAtLimitAngle leaves the limit.
+constexpr double kAtLimitAngle = 1e-7;
+bool at_limit(const JointLimit& limit, const Quat& rest, const Quat& local, const Vec3& inward) {
+  if (inward.isZero()) return false;
+  const Quat out = from_rotation_vector(-kAtLimitAngle * inward) * local;
+  return violation(limit, rest.conjugate() * out) > 0.0;
+}
+
 // Turns each non-root joint by its world rotation vector (G' = exp(dtheta) G, so the local
 // rotation becomes exp(G_p^-1 dtheta) L, with the parents' rotations of the linearization) and
-// constrains it by its limit, remembering the limit's push-back axis (parent frame).
+// constrains it by its limit, remembering the limit's push-back axes.
 void apply_step(const Skeleton& skeleton, const TreeIkProblem& problem, SkeletonPose& pose,
                 DlsWorkspace& ws) {
   const auto& parents = skeleton.parents();
@@ -193,16 +250,27 @@ void apply_step(const Skeleton& skeleton, const TreeIkProblem& problem, Skeleton
       const Vec3 r = pose.global_rotations[static_cast<std::size_t>(parent)].conjugate() * dtheta;
       local = (from_rotation_vector(r) * local).normalized();
     }
-    ws.pushed_back[ju].setZero();
+    std::array<Vec3, 2>& pushed = ws.pushed_back[ju];
     const JointLimit* limit = limit_of(problem, j);
-    if (limit == nullptr || std::holds_alternative<FreeJoint>(*limit)) continue;
+    if (limit == nullptr || std::holds_alternative<FreeJoint>(*limit)) {
+      pushed = {Vec3::Zero(), Vec3::Zero()};
+      continue;
+    }
     const Quat& rest = skeleton.rest_rotations()[ju];
+    // A push stays active while the joint rests on the limit it was held against (blocked this
+    // iteration), so it is not released to push out again every other iteration; a joint that
+    // moved off the limit is free again.
+    for (unsigned k = 0; k < 2; ++k) {
+      if (!(ws.blocked[ju] & (1u << k)) || !at_limit(*limit, rest, local, pushed[k]))
+        pushed[k].setZero();
+    }
     const Quat wanted = local;
     local = rest * constrain(*limit, rest.conjugate() * local);
-    // The limit's correction local * wanted^-1, in the parent frame: its axis points inward.
-    const Vec3 push = rotation_vector(local * wanted.conjugate());
-    const double angle = push.norm();
-    if (angle > 0.0) ws.pushed_back[ju] = push / angle;
+    if (local.coeffs() == wanted.coeffs()) continue;
+    const std::array<Vec3, 2> axes = push_axes(*limit, rest, wanted, local);
+    for (unsigned k = 0; k < 2; ++k) {
+      if (!axes[k].isZero()) pushed[k] = axes[k];
+    }
   }
 }
 
@@ -241,6 +309,7 @@ Result<TreeIkResult> solve_dls_tree(const Skeleton& skeleton, const TreeIkProble
 
   // The starting guess may lie outside the limits: constrain it first (a zero step).
   ws.step.setZero();
+  std::fill(ws.blocked.begin(), ws.blocked.end(), 0);
   skeleton_forward_kinematics(skeleton, pose);
   apply_step(skeleton, problem, pose, ws);
   skeleton_forward_kinematics(skeleton, pose);
@@ -254,24 +323,25 @@ Result<TreeIkResult> solve_dls_tree(const Skeleton& skeleton, const TreeIkProble
   TreeIkErrors errors = tree_ik_errors(pose, problem.effectors);
   while (!done(errors) && result.iterations < settings.max_iterations) {
     build_rows(skeleton, problem, settings, pose, ws);
-    for (int j = 0; j < joints; ++j) {
-      if (skeleton.parents()[static_cast<std::size_t>(j)] >= 0)
-        restrict_columns(skeleton, problem, pose, j, false, ws);
-    }
+    std::fill(ws.blocked.begin(), ws.blocked.end(), 0);
+    for (int j = 0; j < joints; ++j) restrict_to_hinge(problem, pose, j, ws);
     take_step(settings, ws);
     // Clamping loop (Baerlocher & Boulic 2004): a joint its limit pushed back last iteration
     // whose step points outward again loses that direction, and the step is taken anew.
-    for (int pass = 0; pass < 2; ++pass) {
+    for (int pass = 0; pass < 3; ++pass) {
       bool blocked_any = false;
       for (int j = 0; j < joints; ++j) {
         const auto ju = static_cast<std::size_t>(j);
         const int parent = skeleton.parents()[ju];
-        if (parent < 0 || ws.pushed_back[ju].isZero()) continue;
-        const Vec3 inward =
-            pose.global_rotations[static_cast<std::size_t>(parent)] * ws.pushed_back[ju];
-        if (ws.step.segment<3>(3 * j).dot(inward) >= 0.0) continue;
-        restrict_columns(skeleton, problem, pose, j, true, ws);
-        blocked_any = true;
+        if (parent < 0) continue;
+        const Quat& g = pose.global_rotations[static_cast<std::size_t>(parent)];
+        for (unsigned k = 0; k < 2; ++k) {
+          const Vec3& inward = ws.pushed_back[ju][k];
+          if ((ws.blocked[ju] & (1u << k)) || inward.isZero()) continue;
+          if (ws.step.segment<3>(3 * j).dot(g * inward) >= 0.0) continue;
+          block_axis(pose, skeleton, j, k, ws);
+          blocked_any = true;
+        }
       }
       if (!blocked_any) break;
       take_step(settings, ws);

@@ -11,6 +11,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -67,9 +68,11 @@ struct DlsWorkspace {
   Eigen::VectorXd step;                                  ///< dtheta, 3 per joint (world)
   Eigen::VectorXd step_i;                                ///< SDLS: one singular direction's
   Eigen::VectorXd column_norms;                          ///< SDLS: rho_j, 3 per joint
-  /// Per joint: the unit axis (parent frame) along which the last iteration's limit pushed the
-  /// joint back, or zero when the limit was not active.
-  std::vector<Vec3> pushed_back;
+  /// Per joint: up to two unit axes (parent frame) about which the last iteration's limit turned
+  /// the joint back inward (a ball's swing and twist separately), zero when not active.
+  std::vector<std::array<Vec3, 2>> pushed_back;
+  /// Per joint, this iteration: bit k set when pushed_back[j][k] is taken out of its columns.
+  std::vector<unsigned char> blocked;
 };
 
 /// DLS or SDLS on a tree, same contract as every tree solver (tree_ik.h): the pose is the
