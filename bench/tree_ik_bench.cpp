@@ -267,12 +267,16 @@ void kdl_tree(benchmark::State& state) {
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
-  benchmark::RegisterBenchmark("tree_ik/animkit_dls", [](benchmark::State& s) {
-    animkit_dls(s, animkit::DlsMethod::damped);
-  })->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark("tree_ik/animkit_sdls", [](benchmark::State& s) {
-    animkit_dls(s, animkit::DlsMethod::selective);
-  })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(
+      "tree_ik/animkit_dls",
+      [](benchmark::State& s) { animkit_dls(s, animkit::DlsMethod::damped); })
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+  benchmark::RegisterBenchmark(
+      "tree_ik/animkit_sdls",
+      [](benchmark::State& s) { animkit_dls(s, animkit::DlsMethod::selective); })
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
   // FABRIK-tree: register "tree_ik/animkit_fabrik" here.
   benchmark::RegisterBenchmark("tree_ik/kdl_wdls", kdl_tree)
       ->Unit(benchmark::kMillisecond)
