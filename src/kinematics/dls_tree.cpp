@@ -7,26 +7,11 @@
 #include <variant>
 
 #include "animkit/core/validation.h"
+#include "limit_push.h"
 
 namespace animkit {
 
 namespace {
-
-// Rotation vector (axis * angle, angle in [0, pi]) of a unit quaternion, the short way round.
-Vec3 rotation_vector(const Quat& q) {
-  const double sign = q.w() < 0.0 ? -1.0 : 1.0;
-  const Vec3 v = sign * q.vec();
-  const double s = v.norm();
-  if (s < 1e-300) return 2.0 * v;  // angle ~ 2 s: the first-order limit, exact at zero
-  return (2.0 * std::atan2(s, sign * q.w()) / s) * v;
-}
-
-Quat from_rotation_vector(const Vec3& r) {
-  const double angle = r.norm();
-  if (angle < 1e-300) return Quat::Identity();
-  const Vec3 v = (std::sin(0.5 * angle) / angle) * r;
-  return Quat(std::cos(0.5 * angle), v.x(), v.y(), v.z());
-}
 
 // skew(d) w = d x w.
 Eigen::Matrix3d skew(const Vec3& d) {
@@ -186,54 +171,6 @@ void take_step(const DlsSettings& s, DlsWorkspace& ws) {
   }
 }
 
-// Smallest limit correction (radians) that counts as a push: well above rounding.
-constexpr double kPushThreshold = 1e-12;
-
-// The axes (parent frame, pointing inward) about which constraining turned `local` back from
-// `wanted`: the gradients, in angular velocity, of the limit's active constraints. A ball's
-// swing and twist are separate, so a joint in a corner of its limit is blocked in both. In the
-// rest frame (q = rest^-1 L, angular velocity w with dq/dt = w q / 2, twist axis a, bone
-// b = q a = swing a):
-//   swing angle: d(swing)/dt = w . (a x b) / |a x b|, the axis of the swing correction;
-//   twist angle: q = s(b) t with s the shortest arc a -> b, so w = w_s + (dtwist/dt) b, and the
-//   shortest arc's own spin about b gives dtwist/dt = w . (b + (a - (a.b) b) / (1 + a.b)).
-// Turning a bone by w perpendicular to it therefore changes its twist too; blocking only
-// rotations about the bone lets the twist run into its limit again every iteration. Other
-// limits: the whole correction's axis. All mapped to the parent frame by `rest`.
-std::array<Vec3, 2> push_axes(const JointLimit& limit, const Quat& rest, const Quat& wanted,
-                              const Quat& local) {
-  std::array<Vec3, 2> axes{Vec3::Zero(), Vec3::Zero()};
-  // Corrections below rounding size are no push (their axes would be noise).
-  auto unit = [](const Vec3& v) {
-    return v.norm() > kPushThreshold ? Vec3(v.normalized()) : Vec3::Zero();
-  };
-  if (const auto* ball = std::get_if<BallLimit>(&limit)) {
-    const Vec3 a = ball->twist_axis.normalized();
-    const SwingTwist w = swing_twist(rest.conjugate() * wanted, a);
-    const SwingTwist c = swing_twist(rest.conjugate() * local, a);
-    axes[0] = unit(rest * rotation_vector(c.swing * w.swing.conjugate()));
-    const double delta = rotation_vector(c.twist * w.twist.conjugate()).dot(a);
-    const Vec3 b = c.swing * a;
-    const double cos_swing = a.dot(b);
-    if (std::abs(delta) > kPushThreshold && cos_swing > -1.0 + 1e-9) {
-      const Vec3 gradient = b + (a - cos_swing * b) / (1.0 + cos_swing);
-      axes[1] = (delta > 0.0 ? 1.0 : -1.0) * unit(rest * gradient);
-    }
-    return axes;
-  }
-  axes[0] = unit(rotation_vector(local * wanted.conjugate()));
-  return axes;
-}
-
-// Whether the joint rests on its limit along the inward axis `inward` (parent frame): turning
-// it outward by kAtLimitAngle leaves the limit.
-constexpr double kAtLimitAngle = 1e-7;
-bool at_limit(const JointLimit& limit, const Quat& rest, const Quat& local, const Vec3& inward) {
-  if (inward.isZero()) return false;
-  const Quat out = from_rotation_vector(-kAtLimitAngle * inward) * local;
-  return violation(limit, rest.conjugate() * out) > 0.0;
-}
-
 // Turns each non-root joint by its world rotation vector (G' = exp(dtheta) G, so the local
 // rotation becomes exp(G_p^-1 dtheta) L, with the parents' rotations of the linearization) and
 // constrains it by its limit, remembering the limit's push-back axes.
@@ -267,7 +204,7 @@ void apply_step(const Skeleton& skeleton, const TreeIkProblem& problem, Skeleton
     const Quat wanted = local;
     local = rest * constrain(*limit, rest.conjugate() * local);
     if (local.coeffs() == wanted.coeffs()) continue;
-    const std::array<Vec3, 2> axes = push_axes(*limit, rest, wanted, local);
+    const std::array<Vec3, 2> axes = limit_push_axes(*limit, rest, wanted, local);
     for (unsigned k = 0; k < 2; ++k) {
       if (!axes[k].isZero()) pushed[k] = axes[k];
     }
