@@ -36,9 +36,12 @@ void size_workspace(DlsWorkspace& ws, int joints, int rows) {
   ws.jacobian.resize(rows, cols);
   ws.error.resize(rows);
   ws.jjt.resize(rows, rows);
-  if (ws.llt.matrixLLT().rows() != rows) ws.llt = Eigen::LLT<Eigen::MatrixXd>(rows);
-  if (ws.eigen.eigenvalues().size() != rows)
+  // The decompositions' accessors assert before a first compute(), so their size is kept here.
+  if (ws.decomposition_rows != rows) {
+    ws.llt = Eigen::LLT<Eigen::MatrixXd>(rows);
     ws.eigen = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(rows);
+    ws.decomposition_rows = rows;
+  }
   ws.jtu.resize(cols, rows);
   ws.solve.resize(rows);
   ws.step.resize(cols);

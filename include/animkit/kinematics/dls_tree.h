@@ -62,6 +62,7 @@ struct DlsWorkspace {
   Eigen::VectorXd error;     ///< weighted effector errors (positions, then orientations)
   Eigen::MatrixXd jjt;       ///< J J^T (+ lambda^2 I for DLS)
   Eigen::LLT<Eigen::MatrixXd> llt;
+  int decomposition_rows = -1;                           ///< the size llt and eigen were made for
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;  ///< SDLS: J J^T = U S^2 U^T
   Eigen::MatrixXd jtu;                                   ///< SDLS: J^T U (columns sigma_i v_i)
   Eigen::VectorXd solve;                                 ///< (J J^T + lambda^2 I)^-1 e
