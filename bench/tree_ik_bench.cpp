@@ -42,7 +42,7 @@ using animkit::Vec3;
 constexpr const char* kEffectorNames[] = {"lhand", "rhand", "LeftAnkle", "RightAnkle"};
 constexpr double kTolerance = 1e-4;  // metres
 constexpr int kMaxIterations = 100;
-constexpr double kLambda = 0.05;  // both solvers' damping, metres
+constexpr double kLambda = animkit::DlsSettings{}.lambda;  // both solvers' damping, metres
 
 struct Clip {
   animkit::BvhClip bvh;

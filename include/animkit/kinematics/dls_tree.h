@@ -38,9 +38,11 @@ struct DlsSettings {
   double angular_tolerance = 1e-4;
   /// DLS damping lambda in scene units, >= 0. It bounds the step where J is near singular
   /// (|dtheta| <= |e| / (2 lambda) per singular direction) and slows convergence only along
-  /// directions whose singular value (about a lever arm in scene units) is below lambda; 0.05 m
-  /// is a few percent of a limb's length. Unused by SDLS.
-  double lambda = 0.05;
+  /// directions whose singular value (about a lever arm in scene units) is below lambda, each
+  /// iteration shrinking the error along one by lambda^2 / (sigma^2 + lambda^2). 0.02 m, a few
+  /// percent of a limb's length: larger values stall short of a 1e-4 m tolerance on limbs held
+  /// by their limits (tests/kinematics/dls_tree_test.cpp). Unused by SDLS.
+  double lambda = 0.02;
   /// Largest joint rotation per iteration, radians, in (0, pi]: the whole step is scaled down so
   /// that no joint's rotation-vector component exceeds it (Buss & Kim's ClampMaxAbs). For SDLS
   /// it is gamma_max (the paper uses pi / 4).
