@@ -36,12 +36,9 @@ void size_workspace(DlsWorkspace& ws, int joints, int rows) {
   ws.jacobian.resize(rows, cols);
   ws.error.resize(rows);
   ws.jjt.resize(rows, rows);
-  // The decompositions' accessors assert before a first compute(), so their size is kept here.
-  if (ws.decomposition_rows != rows) {
-    ws.llt = Eigen::LLT<Eigen::MatrixXd>(rows);
-    ws.eigen = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(rows);
-    ws.decomposition_rows = rows;
-  }
+  // llt and eigen size themselves in their first compute() and keep that memory after (Eigen
+  // resizes to an unchanged size without allocating). Not rebuilt with a size here: copying a
+  // decomposition that never computed reads its uninitialized status (UBSan).
   ws.jtu.resize(cols, rows);
   ws.solve.resize(rows);
   ws.step.resize(cols);
