@@ -57,14 +57,14 @@ struct DlsSettings {
 
 /// Scratch memory of solve_dls_tree(), owned by the caller and reused across calls. The solver
 /// sizes it for the skeleton and effectors on first use; later calls with the same skeleton
-/// size, effector count and orientation-target count allocate nothing. Its contents between
+/// size, effector count and orientation-target count allocate nothing (validate_tree_ik, which
+/// every tree solver calls first, still does). Its contents between
 /// calls carry no state: a reused workspace gives the same bits as a fresh one.
 struct DlsWorkspace {
   Eigen::MatrixXd jacobian;  ///< rows: weighted effector errors; columns: 3 per joint (world)
   Eigen::VectorXd error;     ///< weighted effector errors (positions, then orientations)
   Eigen::MatrixXd jjt;       ///< J J^T (+ lambda^2 I for DLS)
   Eigen::LLT<Eigen::MatrixXd> llt;
-  int decomposition_rows = -1;                           ///< the size llt and eigen were made for
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;  ///< SDLS: J J^T = U S^2 U^T
   Eigen::MatrixXd jtu;                                   ///< SDLS: J^T U (columns sigma_i v_i)
   Eigen::VectorXd solve;                                 ///< (J J^T + lambda^2 I)^-1 e
@@ -83,9 +83,11 @@ struct DlsWorkspace {
 /// translation. Each iteration builds the Jacobian of the weighted effector errors (position
 /// rows omega x (p_e - p_j), orientation rows the identity, for every non-root joint j above
 /// effector e; a hinge's columns only along its axis), takes the step, turns each joint's world
-/// rotation by its rotation vector and constrains it by its limit. A joint its limit pushed back
-/// in the last iteration may not move along that push's outward direction in this one (its
-/// columns lose that component), so it does not keep pushing against the limit.
+/// rotation by its rotation vector and constrains it by its limit. A joint resting on its limit
+/// whose step points outward loses that direction (the gradient of the active constraint; a
+/// ball's swing and twist apart) and the step is solved again (a clamping loop, Baerlocher &
+/// Boulic 2004), so it does not keep pushing against the limit while others could move.
+/// Limits are enforced after every iteration, so the result is always inside them.
 /// Errors: validate_tree_ik's or settings.validate()'s message; the pose is then untouched.
 Result<TreeIkResult> solve_dls_tree(const Skeleton& skeleton, const TreeIkProblem& problem,
                                     const DlsSettings& settings, DlsWorkspace& workspace,
