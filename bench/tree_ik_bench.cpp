@@ -12,7 +12,8 @@
 // q += dq) with task-space weights that ignore orientation and the stop test on the largest
 // position error, as animkit's; NR_JL's own stop test also wants the orientations, which these
 // targets do not give. The WDLS solver is damped (setLambda): undamped it diverges to NaN on
-// this skeleton. A NaN counts as a failure, and the next frame starts from rest.
+// this skeleton (the kdl_wdls_undamped row shows it). A NaN counts as a failure, and the next
+// frame starts from rest.
 //
 // One benchmark iteration solves the whole clip. Counters: per_frame (wall time per frame),
 // converged (fraction of frames within tolerance), max_err_mm (largest final error), nan_frames,
@@ -211,7 +212,7 @@ void check_same_skeleton(const Clip& c, const KdlModel& m) {
   }
 }
 
-void kdl_tree(benchmark::State& state) {
+void kdl_tree(benchmark::State& state, double lambda) {
   const Clip& c = clip();
   const KdlModel m = kdl_model(c);
   check_same_skeleton(c, m);
@@ -219,7 +220,7 @@ void kdl_tree(benchmark::State& state) {
   for (int j : c.effector_joints) endpoints.push_back(m.tips[j]);
   KDL::TreeFkSolverPos_recursive fk(m.tree);
   KDL::TreeIkSolverVel_wdls wdls(m.tree, endpoints);
-  wdls.setLambda(kLambda);
+  wdls.setLambda(lambda);
   Eigen::MatrixXd weights = Eigen::MatrixXd::Zero(6 * endpoints.size(), 6 * endpoints.size());
   for (std::size_t e = 0; e < endpoints.size(); ++e)
     weights.block<3, 3>(6 * e, 6 * e).setIdentity();  // position rows only
@@ -278,7 +279,13 @@ int main(int argc, char** argv) {
       ->Unit(benchmark::kMillisecond)
       ->UseRealTime();
   // FABRIK-tree: register "tree_ik/animkit_fabrik" here.
-  benchmark::RegisterBenchmark("tree_ik/kdl_wdls", kdl_tree)
+  benchmark::RegisterBenchmark("tree_ik/kdl_wdls",
+                               [](benchmark::State& s) { kdl_tree(s, kLambda); })
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+  // Undamped, to show why the comparison damps it: its NaN frames are failures.
+  benchmark::RegisterBenchmark("tree_ik/kdl_wdls_undamped",
+                               [](benchmark::State& s) { kdl_tree(s, 0.0); })
       ->Unit(benchmark::kMillisecond)
       ->UseRealTime();
   animkit::bench::RatioReporter reporter;
