@@ -27,6 +27,8 @@ packages=(
   # frame (code independent of the solver's), and Bullet's soft body is the drape benchmark's
   # point of comparison. The library itself uses neither.
   libcgal-dev libbullet-dev
+  # Tree IK benchmark only: Orocos KDL's tree solvers are its point of comparison (issue 12).
+  liborocos-kdl-dev
 )
 if [ "${1:-}" = "--tests" ]; then
   # The tests only: Blender (Debian's 3.4, the version the README's Blender steps use) opens the
