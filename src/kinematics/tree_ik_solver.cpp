@@ -16,6 +16,8 @@ struct TreeIkSolverEntry {
 constexpr std::array kTreeIkSolvers{
     TreeIkSolverEntry{TreeIkSolverKind::fabrik, "fabrik"},
     TreeIkSolverEntry{TreeIkSolverKind::ccd, "ccd"},
+    TreeIkSolverEntry{TreeIkSolverKind::dls, "dls"},
+    TreeIkSolverEntry{TreeIkSolverKind::sdls, "sdls"},
 };
 
 constexpr std::array<TreeIkSolverKind, kTreeIkSolvers.size()> kinds() {

@@ -16,13 +16,13 @@ TEST(TreeIkSolver, EveryKindHasAUniqueNameThatParsesBack) {
     EXPECT_TRUE(names.insert(std::string(name)).second) << name;
     EXPECT_EQ(parse_tree_ik_solver(name), kind);
   }
-  EXPECT_EQ(names, (std::set<std::string>{"fabrik", "ccd"}));
+  EXPECT_EQ(names, (std::set<std::string>{"fabrik", "ccd", "dls", "sdls"}));
 }
 
 TEST(TreeIkSolver, UnknownNamesDoNotParse) {
   EXPECT_FALSE(parse_tree_ik_solver(""));
   EXPECT_FALSE(parse_tree_ik_solver("FABRIK"));
-  EXPECT_FALSE(parse_tree_ik_solver("dls"));
+  EXPECT_FALSE(parse_tree_ik_solver("jacobian"));
   EXPECT_EQ(all_tree_ik_solvers().front(), TreeIkSolverKind::fabrik);
 }
 
