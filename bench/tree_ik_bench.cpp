@@ -54,8 +54,7 @@ struct Clip {
 
 const Clip& clip() {
   static const Clip c = [] {
-    auto bvh =
-        animkit::read_bvh_file(ANIMKIT_TEST_DATA_DIR "/cmu/131_01.bvh", {.scale = 0.056444});
+    auto bvh = animkit::read_bvh_file(ANIMKIT_TEST_DATA_DIR "/cmu/131_01.bvh", {.scale = 0.056444});
     if (!bvh) {
       std::fprintf(stderr, "%s\n", bvh.error().message.c_str());
       std::exit(1);
