@@ -4,8 +4,6 @@
 
 #include <cstdio>
 
-#include "animkit/kinematics/ccd.h"
-#include "animkit/trajectory/lab_shapes.h"
 #include "tree_ik_checks.h"
 
 namespace animkit {
@@ -36,29 +34,7 @@ TEST(CcdTree, DeterministicAndWorkspaceReuseIsInvisible) {
 // The lab's arm as a one-branch skeleton reaches what the chain's CCD reaches: the lab's
 // shapes, one target per frame, warm-started from the previous frame as the lab drives it.
 TEST(CcdTree, LabArmReachesTheChainSolversTargets) {
-  const Chain chain = build_chain(lab_arm()).value();
-  const Skeleton s = build_skeleton(skeleton_desc_from_chain(lab_arm())).value();
-  const int end = s.joint_count() - 1;
-  CcdTreeWorkspace workspace;
-  int targets = 0;
-  for (const LabShape shape : all_lab_shapes()) {
-    Pose chain_pose = rest_pose(chain);
-    SkeletonPose pose = skeleton_rest_pose(s);
-    const std::vector<Vec3> points = lab_shape_targets(shape);
-    for (std::size_t k = 0; k < points.size(); k += 7) {
-      const auto chain_result = solve_ccd(chain, chain_pose, points[k]);
-      ASSERT_TRUE(chain_result);
-      if (!chain_result->converged) continue;
-      const std::vector<Effector> effectors{Effector{end, points[k]}};
-      const auto result =
-          solve_ccd_tree(s, TreeIkProblem{effectors}, CcdTreeSettings{}, workspace, pose);
-      ASSERT_TRUE(result) << result.error().message;
-      EXPECT_TRUE(result->converged) << to_string(shape) << " point " << k;
-      EXPECT_LE((pose.global_positions[static_cast<std::size_t>(end)] - points[k]).norm(), 1e-4);
-      ++targets;
-    }
-  }
-  EXPECT_GT(targets, 100);
+  tree_checks::lab_arm_reaches_the_chain_solvers_targets<Ccd>(IkSolverKind::ccd);
 }
 
 // Targets made by FK of random poses inside the limits, four effectors (hands and feet, weights
@@ -80,7 +56,7 @@ TEST(CcdTree, ReachesJointlyReachableTargetsOnAFigure) {
 
 TEST(CcdTree, ReachesJointlyReachableTargetsOnTheCmuSkeleton) {
   const auto s = tree_samples::cmu_skeleton();
-  if (!s) GTEST_SKIP() << "no CMU data in " ANIMKIT_TEST_DATA_DIR;
+  ASSERT_TRUE(s) << "no CMU data in " ANIMKIT_TEST_DATA_DIR;
   const auto joints = tree_samples::joints_named(*s, {"lhand", "rhand", "LeftAnkle", "RightAnkle"});
   const auto f = tree_checks::reach_fractions<Ccd>(*s, joints, 200);
   RecordProperty("fractions", tree_checks::describe(f));

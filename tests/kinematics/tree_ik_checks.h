@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 #include <vector>
 
+#include "animkit/kinematics/ik_solver.h"
+#include "animkit/trajectory/lab_shapes.h"
 #include "tree_ik_samples.h"
 
 namespace animkit::tree_checks {
@@ -157,6 +160,36 @@ struct ReachFractions {
   double balls = 0.0;         ///< ball limits only, 1000 iterations
   double hinges = 0.0;        ///< balls and hinged knees and elbows, 1000 iterations
 };
+
+// The lab's arm as a one-branch skeleton reaches what the chain's solver `chain_solver`
+// reaches: every 7th point of the lab's shapes, one target per frame, warm-started from the
+// previous frame as the lab drives it.
+template <class Solver>
+void lab_arm_reaches_the_chain_solvers_targets(IkSolverKind chain_solver) {
+  const Chain chain = build_chain(lab_arm()).value();
+  const Skeleton s = build_skeleton(skeleton_desc_from_chain(lab_arm())).value();
+  const int end = s.joint_count() - 1;
+  typename Solver::Workspace workspace;
+  int targets = 0;
+  for (const LabShape shape : all_lab_shapes()) {
+    Pose chain_pose = rest_pose(chain);
+    SkeletonPose pose = skeleton_rest_pose(s);
+    const std::vector<Vec3> points = lab_shape_targets(shape);
+    for (std::size_t k = 0; k < points.size(); k += 7) {
+      const auto chain_result = solve_ik(chain_solver, chain, chain_pose, points[k]);
+      ASSERT_TRUE(chain_result);
+      if (!chain_result->converged) continue;
+      const std::vector<Effector> effectors{Effector{end, points[k]}};
+      const auto result =
+          Solver::solve(s, TreeIkProblem{effectors}, typename Solver::Settings{}, workspace, pose);
+      ASSERT_TRUE(result) << result.error().message;
+      EXPECT_TRUE(result->converged) << to_string(shape) << " point " << k;
+      EXPECT_LE((pose.global_positions[static_cast<std::size_t>(end)] - points[k]).norm(), 1e-4);
+      ++targets;
+    }
+  }
+  EXPECT_GT(targets, 100);
+}
 
 template <class Solver>
 ReachFractions reach_fractions(const Skeleton& s, const std::vector<int>& joints, int solves) {
