@@ -13,6 +13,7 @@
 
 #include "animkit/core/validation.h"
 #include "limit_push.h"
+#include "tree_ik_common.h"
 
 namespace animkit {
 
@@ -51,12 +52,14 @@ void size_workspace(DlsWorkspace& ws, int joints, int rows) {
   ws.column_norms.resize(cols);
   ws.pushed_back.assign(static_cast<std::size_t>(joints), {Vec3::Zero(), Vec3::Zero()});
   ws.blocked.assign(static_cast<std::size_t>(joints), 0);
+  ws.scratch.resize(joints);
 }
 
 // Rows of the weighted error e and its Jacobian J (d e / d omega_j, omega_j joint j's world
-// angular step): an effector's position rows are w (target - p_e) and, for each non-root joint j
-// strictly above it, w (omega_j x (p_e - p_j)) = -w skew(p_e - p_j) omega_j; its orientation
-// rows are w_o rotvec(target * current^-1) and w_o I for j the effector or above it.
+// angular step): an effector's position rows are w (target - p_e) and, for each joint j strictly
+// above it, root included (roots turn, tree_ik.h), w (omega_j x (p_e - p_j)) = -w skew(p_e - p_j)
+// omega_j; its orientation rows are w_o rotvec(target * current^-1) and w_o I for j the effector
+// or above it.
 void build_rows(const Skeleton& skeleton, const TreeIkProblem& problem, const DlsSettings& s,
                 const SkeletonPose& pose, DlsWorkspace& ws) {
   ws.jacobian.setZero();
@@ -65,8 +68,8 @@ void build_rows(const Skeleton& skeleton, const TreeIkProblem& problem, const Dl
   for (const Effector& e : problem.effectors) {
     const Vec3& p = pose.global_positions[static_cast<std::size_t>(e.joint)];
     ws.error.segment<3>(row) = e.weight * (e.position - p);
-    for (int j = parents[static_cast<std::size_t>(e.joint)];
-         parents[static_cast<std::size_t>(j)] >= 0; j = parents[static_cast<std::size_t>(j)]) {
+    for (int j = parents[static_cast<std::size_t>(e.joint)]; j >= 0;
+         j = parents[static_cast<std::size_t>(j)]) {
       const Vec3 d = p - pose.global_positions[static_cast<std::size_t>(j)];
       ws.jacobian.block<3, 3>(row, 3 * j) = -e.weight * skew(d);
     }
@@ -77,8 +80,7 @@ void build_rows(const Skeleton& skeleton, const TreeIkProblem& problem, const Dl
     const double w = e.weight * s.orientation_weight;
     const Quat& q = pose.global_rotations[static_cast<std::size_t>(e.joint)];
     ws.error.segment<3>(row) = w * rotation_vector(*e.orientation * q.conjugate());
-    for (int j = e.joint; parents[static_cast<std::size_t>(j)] >= 0;
-         j = parents[static_cast<std::size_t>(j)]) {
+    for (int j = e.joint; j >= 0; j = parents[static_cast<std::size_t>(j)]) {
       ws.jacobian.block<3, 3>(row, 3 * j) = w * Eigen::Matrix3d::Identity();
     }
     row += 3;
@@ -96,12 +98,19 @@ void restrict_to_hinge(const TreeIkProblem& problem, const SkeletonPose& pose, i
   ws.jacobian.middleCols<3>(3 * j) = ws.jacobian.middleCols<3>(3 * j) * (a * a.transpose());
 }
 
+// The world rotation of joint j's parent; the identity above a root (its local frame is the
+// world's).
+Quat parent_world_rotation(const Skeleton& skeleton, const SkeletonPose& pose, int j) {
+  const int parent = skeleton.parents()[static_cast<std::size_t>(j)];
+  return parent < 0 ? Quat::Identity() : pose.global_rotations[static_cast<std::size_t>(parent)];
+}
+
 // Takes push axis k of joint j (world `inward`) out of its columns, orthogonal to the axis
 // blocked before it, so that two blocked axes remove exactly their span.
 void block_axis(const SkeletonPose& pose, const Skeleton& skeleton, int j, unsigned k,
                 DlsWorkspace& ws) {
   const auto ju = static_cast<std::size_t>(j);
-  const Quat& g = pose.global_rotations[static_cast<std::size_t>(skeleton.parents()[ju])];
+  const Quat g = parent_world_rotation(skeleton, pose, j);
   Vec3 r = g * ws.pushed_back[ju][k];
   if (ws.blocked[ju] & (1u << (1 - k))) {
     const Vec3 other = (g * ws.pushed_back[ju][1 - k]).normalized();
@@ -176,20 +185,17 @@ void take_step(const DlsSettings& s, DlsWorkspace& ws) {
   }
 }
 
-// Turns each non-root joint by its world rotation vector (G' = exp(dtheta) G, so the local
-// rotation becomes exp(G_p^-1 dtheta) L, with the parents' rotations of the linearization) and
-// constrains it by its limit, remembering the limit's push-back axes.
+// Turns each joint, roots included, by its world rotation vector (G' = exp(dtheta) G, so the
+// local rotation becomes exp(G_p^-1 dtheta) L, with the parents' rotations of the
+// linearization) and constrains it by its limit, remembering the limit's push-back axes.
 void apply_step(const Skeleton& skeleton, const TreeIkProblem& problem, SkeletonPose& pose,
                 DlsWorkspace& ws) {
-  const auto& parents = skeleton.parents();
   for (int j = 0; j < skeleton.joint_count(); ++j) {
     const auto ju = static_cast<std::size_t>(j);
-    const int parent = parents[ju];
-    if (parent < 0) continue;
     const Vec3 dtheta = ws.step.segment<3>(3 * j);
     Quat& local = pose.local_rotations[ju];
     if (dtheta.squaredNorm() > 0.0) {
-      const Vec3 r = pose.global_rotations[static_cast<std::size_t>(parent)].conjugate() * dtheta;
+      const Vec3 r = parent_world_rotation(skeleton, pose, j).conjugate() * dtheta;
       local = (from_rotation_vector(r) * local).normalized();
     }
     std::array<Vec3, 2>& pushed = ws.pushed_back[ju];
@@ -262,8 +268,18 @@ Result<TreeIkResult> solve_dls_tree(const Skeleton& skeleton, const TreeIkProble
     return errors.position <= settings.tolerance &&
            errors.orientation <= settings.angular_tolerance;
   };
+  // A straight limb on the line to its target (the lab's arm at rest) has no gradient toward
+  // it: an iteration that changes the error by less than this fraction makes no progress, and
+  // after kStallIterations of them the joints above the effectors are bent (detail::kick, as
+  // FABRIK and CCD do), at most kMaxKicks times.
+  constexpr double kStallRatio = 1e-6;
+  constexpr int kStallIterations = 3;
+  constexpr int kMaxKicks = 10;
+  detail::index_effectors(skeleton, problem.effectors, ws.scratch);
+  int stalled = 0, kicks = 0;
   TreeIkErrors errors = tree_ik_errors(pose, problem.effectors);
   while (!done(errors) && result.iterations < settings.max_iterations) {
+    const double before = errors.position + errors.orientation;
     build_rows(skeleton, problem, settings, pose, ws);
     std::fill(ws.blocked.begin(), ws.blocked.end(), 0);
     for (int j = 0; j < joints; ++j) restrict_to_hinge(problem, pose, j, ws);
@@ -274,9 +290,7 @@ Result<TreeIkResult> solve_dls_tree(const Skeleton& skeleton, const TreeIkProble
       bool blocked_any = false;
       for (int j = 0; j < joints; ++j) {
         const auto ju = static_cast<std::size_t>(j);
-        const int parent = skeleton.parents()[ju];
-        if (parent < 0) continue;
-        const Quat& g = pose.global_rotations[static_cast<std::size_t>(parent)];
+        const Quat g = parent_world_rotation(skeleton, pose, j);
         for (unsigned k = 0; k < 2; ++k) {
           const Vec3& inward = ws.pushed_back[ju][k];
           if ((ws.blocked[ju] & (1u << k)) || inward.isZero()) continue;
@@ -292,6 +306,14 @@ Result<TreeIkResult> solve_dls_tree(const Skeleton& skeleton, const TreeIkProble
     skeleton_forward_kinematics(skeleton, pose);
     ++result.iterations;
     errors = tree_ik_errors(pose, problem.effectors);
+    const double after = errors.position + errors.orientation;
+    stalled = std::abs(after - before) <= kStallRatio * before ? stalled + 1 : 0;
+    if (stalled >= kStallIterations && kicks < kMaxKicks && !done(errors)) {
+      ++kicks;
+      stalled = 0;
+      detail::kick(skeleton, problem.limits, ws.scratch, pose);
+      errors = tree_ik_errors(pose, problem.effectors);
+    }
   }
   result.error = errors.position;
   result.orientation_error = errors.orientation;

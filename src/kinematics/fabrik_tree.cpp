@@ -1,9 +1,15 @@
+// GCC 12's own AVX-512 intrinsics trip -Wuninitialized when Eigen's dense decompositions (the
+// DLS finish's workspace) are inlined with -march=native at -O1: a false positive in the
+// compiler's headers (see dls_tree.cpp), silenced for this file only.
+#pragma GCC diagnostic ignored "-Wuninitialized"
+
 #include "animkit/kinematics/fabrik_tree.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 
 #include "tree_ik_common.h"
 
@@ -204,10 +210,51 @@ class FabrikTreeIteration final : public detail::TreeIteration {
   FabrikTreeWorkspace& ws_;
 };
 
+// Both errors against the tolerances in one number: converged when <= 1.
+double score(const TreeIkErrors& errors, const FabrikTreeSettings& settings) {
+  return std::max(errors.position / settings.tolerance,
+                  errors.orientation / settings.angular_tolerance);
+}
+
+// DLS from FABRIK's pose (FabrikTreeSettings::finish_with_dls); keeps whichever pose is better.
+void finish_with_dls(const Skeleton& skeleton, const TreeIkProblem& problem,
+                     const FabrikTreeSettings& settings, FabrikTreeWorkspace& workspace,
+                     SkeletonPose& pose, TreeIkResult& result) {
+  DlsSettings dls = settings.dls_finish;
+  dls.tolerance = settings.tolerance;
+  dls.angular_tolerance = settings.angular_tolerance;
+  const double before = score({result.error, result.orientation_error}, settings);
+  auto& fabrik_pose = workspace.scratch.best_local_rotations;
+  fabrik_pose = pose.local_rotations;  // same size: no allocation
+  const auto finished = solve_dls_tree(skeleton, problem, dls, workspace.dls, pose);
+  // Inputs and settings were validated, so the solve cannot fail; stay with FABRIK's if it did.
+  const bool better =
+      finished && score({finished->error, finished->orientation_error}, settings) < before;
+  if (!better) {
+    pose.local_rotations = fabrik_pose;
+    skeleton_forward_kinematics(skeleton, pose);
+  } else {
+    result.error = finished->error;
+    result.orientation_error = finished->orientation_error;
+    result.converged = finished->converged;
+  }
+  if (finished) {
+    result.iterations += finished->iterations;
+    result.finish_iterations = finished->iterations;
+  }
+}
+
 }  // namespace
 
 std::optional<Error> FabrikTreeSettings::validate() const {
-  return detail::validate_tree_loop_settings(loop_settings(*this));
+  if (auto error = detail::validate_tree_loop_settings(loop_settings(*this))) return error;
+  if (!finish_with_dls) return std::nullopt;
+  // The finish uses this solve's tolerances: validate the rest of its settings with them.
+  DlsSettings dls = dls_finish;
+  dls.tolerance = tolerance;
+  dls.angular_tolerance = angular_tolerance;
+  if (auto error = dls.validate()) return Error{"FABRIK's DLS finish: " + error->message};
+  return std::nullopt;
 }
 
 void FabrikTreeWorkspace::resize(const Skeleton& skeleton) {
@@ -223,9 +270,14 @@ Result<TreeIkResult> solve_fabrik_tree(const Skeleton& skeleton, const TreeIkPro
   const detail::TreeLoopSettings loop = loop_settings(settings);
   if (auto error = detail::check_tree_ik(skeleton, problem, pose, loop))
     return fail(error->message);
+  if (auto error = settings.validate()) return fail(error->message);
   workspace.resize(skeleton);
   FabrikTreeIteration iteration(skeleton, problem, workspace);
-  return detail::run_tree_ik(skeleton, problem, loop, workspace.scratch, pose, iteration);
+  TreeIkResult result =
+      detail::run_tree_ik(skeleton, problem, loop, workspace.scratch, pose, iteration);
+  if (settings.finish_with_dls && !result.converged && result.reachable)
+    finish_with_dls(skeleton, problem, settings, workspace, pose, result);
+  return result;
 }
 
 }  // namespace animkit

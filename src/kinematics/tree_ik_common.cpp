@@ -18,8 +18,6 @@ namespace {
 constexpr double kStallRatio = 1e-6;
 constexpr int kStallIterations = 3;
 constexpr int kMaxKicks = 10;
-// The bend of a kick: the angle the chain solvers kick a stalled chain by (ik_common.h).
-constexpr double kKickAngle = 0.2;
 
 // Both errors against their tolerances in one number: converged when <= 1.
 double score(const TreeIkErrors& errors, const TreeLoopSettings& settings) {
@@ -36,9 +34,8 @@ void project_into_limits(const Skeleton& skeleton, std::span<const JointLimit> l
   skeleton_forward_kinematics(skeleton, pose);
 }
 
-// Turns every joint with effectors below it by kKickAngle about an axis perpendicular to its
-// first such child's bone (in the joint's own frame), inside its limit: a straight chain
-// becomes an arc, which gives the solvers a direction to bend in.
+}  // namespace
+
 void kick(const Skeleton& skeleton, std::span<const JointLimit> limits,
           const TreeIkScratch& scratch, SkeletonPose& pose) {
   const auto& begin = skeleton.child_begin();
@@ -57,8 +54,6 @@ void kick(const Skeleton& skeleton, std::span<const JointLimit> limits,
   }
   skeleton_forward_kinematics(skeleton, pose);
 }
-
-}  // namespace
 
 std::optional<Error> validate_tree_loop_settings(const TreeLoopSettings& settings) {
   if (settings.max_iterations < 1) {

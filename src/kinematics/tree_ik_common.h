@@ -79,6 +79,17 @@ inline Quat parent_rotation(const Skeleton& skeleton, const SkeletonPose& pose, 
   return p < 0 ? Quat::Identity() : pose.global_rotations[static_cast<std::size_t>(p)];
 }
 
+/// The bend of kick(), radians: the angle the chain solvers kick a stalled chain by
+/// (ik_common.h).
+constexpr double kKickAngle = 0.2;
+
+/// Turns every joint with effectors below it (scratch filled by index_effectors) by kKickAngle
+/// about an axis perpendicular to its first such child's bone (in the joint's own frame),
+/// inside its limit, and runs FK: a straight chain becomes an arc, which gives the solvers a
+/// direction to bend in (on the line to its target, none of them finds one).
+void kick(const Skeleton& skeleton, std::span<const JointLimit> limits,
+          const TreeIkScratch& scratch, SkeletonPose& pose);
+
 /// One iteration of a solver; leaves the pose consistent (FK run).
 class TreeIteration {
  public:

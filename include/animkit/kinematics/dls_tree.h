@@ -76,18 +76,24 @@ struct DlsWorkspace {
   std::vector<std::array<Vec3, 2>> pushed_back;
   /// Per joint, this iteration: bit k set when pushed_back[j][k] is taken out of its columns.
   std::vector<unsigned char> blocked;
+  /// Effector bookkeeping for the kick out of a stalled, singular pose (tree_ik.h).
+  TreeIkScratch scratch;
 };
 
 /// DLS or SDLS on a tree, same contract as every tree solver (tree_ik.h): the pose is the
-/// starting guess and is overwritten with the solution (FK run); roots keep their rotation and
-/// translation. Each iteration builds the Jacobian of the weighted effector errors (position
-/// rows omega x (p_e - p_j), orientation rows the identity, for every non-root joint j above
-/// effector e; a hinge's columns only along its axis), takes the step, turns each joint's world
+/// starting guess and is overwritten with the solution (FK run); roots keep their translation
+/// and, like every joint, may turn (a root that must not turn gets a limit with no range).
+/// Each iteration builds the Jacobian of the weighted effector errors (position rows
+/// omega x (p_e - p_j), orientation rows the identity, for every joint j above effector e,
+/// roots included; a hinge's columns only along its axis), takes the step, turns each joint's world
 /// rotation by its rotation vector and constrains it by its limit. A joint resting on its limit
 /// whose step points outward loses that direction (the gradient of the active constraint; a
 /// ball's swing and twist apart) and the step is solved again (a clamping loop, Baerlocher &
 /// Boulic 2004), so it does not keep pushing against the limit while others could move.
-/// Limits are enforced after every iteration, so the result is always inside them.
+/// Limits are enforced after every iteration, so the result is always inside them. When the
+/// error stops changing short of the tolerance (a straight limb on the line to its target has no
+/// gradient toward it), the joints above the effectors are bent a little, as FABRIK and CCD do,
+/// up to ten times.
 /// Errors: validate_tree_ik's or settings.validate()'s message; the pose is then untouched.
 Result<TreeIkResult> solve_dls_tree(const Skeleton& skeleton, const TreeIkProblem& problem,
                                     const DlsSettings& settings, DlsWorkspace& workspace,

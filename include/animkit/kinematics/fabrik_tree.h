@@ -9,6 +9,7 @@
 
 #include "animkit/core/result.h"
 #include "animkit/core/types.h"
+#include "animkit/kinematics/dls_tree.h"
 #include "animkit/kinematics/tree_ik.h"
 
 namespace animkit {
@@ -22,6 +23,17 @@ struct FabrikTreeSettings {
   double tolerance = 1e-4;
   /// ... and within this angle of its target orientation, when it has one (radians); > 0.
   double angular_tolerance = 1e-3;
+  /// Whether a solve whose passes end short of targets that are within reach continues with
+  /// damped least squares (solve_dls_tree()) from FABRIK's best pose, inside the same solve:
+  /// FABRIK's passes can settle in a fixed point short of a target the limits allow (see the
+  /// limits of the method below), where DLS, following the gradient with the joints at their
+  /// limits taken out, goes on. The better of the two poses is returned; TreeIkResult counts
+  /// the DLS iterations in `iterations` and apart in `finish_iterations`. Nothing changes for a
+  /// solve the passes converge (or one with a target out of reach). false: FABRIK only.
+  bool finish_with_dls = true;
+  /// The DLS finish's settings; its tolerance and angular_tolerance are replaced by the two
+  /// above. Default: DLS's defaults (damping for skeletons in metres), 100 iterations.
+  DlsSettings dls_finish{};
 
   /// The first problem ("tolerance must be a positive finite number, got -1"), or nothing.
   std::optional<Error> validate() const;
@@ -34,6 +46,7 @@ struct FabrikTreeWorkspace {
   TreeIkScratch scratch;
   std::vector<Vec3> desired;           ///< backward pass: where each joint is asked to go
   std::vector<double> desired_weight;  ///< the weights summed into `desired`
+  DlsWorkspace dls;                    ///< the DLS finish's (FabrikTreeSettings::finish_with_dls)
 
   void resize(const Skeleton& skeleton);
 };
@@ -67,7 +80,9 @@ struct FabrikTreeWorkspace {
 /// Limits of the method: the backward pass does not know the limits, so with hinged knees and
 /// elbows the passes can settle in a fixed point short of a target the limits allow; and
 /// several effectors pulling one rigid sub-base converge slowly, so 100 iterations reach fewer
-/// jointly reachable targets than 1000 (the tests measure both).
+/// jointly reachable targets than 1000 (the tests measure both). Both are what the DLS finish
+/// (FabrikTreeSettings::finish_with_dls, on by default) is for; the tests measure FABRIK with
+/// and without it.
 
 Result<TreeIkResult> solve_fabrik_tree(const Skeleton& skeleton, const TreeIkProblem& problem,
                                        const FabrikTreeSettings& settings,
