@@ -2,8 +2,8 @@
 // four effectors, the hands (lhand, rhand) and the feet (LeftAnkle, RightAnkle). Each frame's
 // targets are that frame's FK (so every set is jointly reachable), the root is put where the
 // frame has it, and each solve starts from the previous frame's solution (rest for the first).
-// The same frames are solved by animkit (DLS, SDLS) and by Orocos KDL's tree solvers on the
-// same skeleton, with the same tolerance (1e-4 m) and iteration cap (100).
+// The same frames are solved by animkit (DLS, SDLS, FABRIK, CCD) and by Orocos KDL's tree
+// solvers on the same skeleton, with the same tolerance (1e-4 m) and iteration cap (100).
 //
 // KDL (Debian's liborocos-kdl-dev, linked by this program only): each BVH joint becomes a fixed
 // segment carrying its offset, then one revolute segment per rotation channel in the file's
@@ -33,7 +33,9 @@
 #include <vector>
 
 #include "animkit/io/bvh.h"
+#include "animkit/kinematics/ccd_tree.h"
 #include "animkit/kinematics/dls_tree.h"
+#include "animkit/kinematics/fabrik_tree.h"
 #include "ratio_reporter.h"
 
 namespace {
@@ -100,13 +102,10 @@ struct Tally {
 
 // ---- animkit ---------------------------------------------------------------------------------
 
-void animkit_dls(benchmark::State& state, animkit::DlsMethod method) {
+// Solves every frame of the clip with `solve(effectors, pose)` once per benchmark iteration.
+template <class Solve>
+void animkit_clip(benchmark::State& state, Solve solve) {
   const Clip& c = clip();
-  const animkit::DlsSettings settings{.method = method,
-                                      .max_iterations = kMaxIterations,
-                                      .tolerance = kTolerance,
-                                      .lambda = kLambda};
-  animkit::DlsWorkspace workspace;
   std::vector<animkit::Effector> effectors(c.effector_joints.size());
   Tally tally;
   for (auto _ : state) {
@@ -119,7 +118,7 @@ void animkit_dls(benchmark::State& state, animkit::DlsMethod method) {
       }
       for (std::size_t e = 0; e < effectors.size(); ++e)
         effectors[e] = {c.effector_joints[e], goal.global_positions[c.effector_joints[e]]};
-      auto result = animkit::solve_dls_tree(c.skeleton, {effectors}, settings, workspace, pose);
+      auto result = solve(effectors, pose);
       tally.add(result->error, result->converged, result->iterations);
       if (std::isnan(result->error)) pose = animkit::skeleton_rest_pose(c.skeleton);
     }
@@ -127,8 +126,47 @@ void animkit_dls(benchmark::State& state, animkit::DlsMethod method) {
   tally.report(state);
 }
 
-// FABRIK-tree rows go here (animkit_fabrik_tree, same loop with solve_fabrik_tree) when the
-// tree FABRIK lands; the ratios below then gain "KDL / animkit FABRIK".
+void animkit_dls(benchmark::State& state, animkit::DlsMethod method) {
+  const animkit::DlsSettings settings{.method = method,
+                                      .max_iterations = kMaxIterations,
+                                      .tolerance = kTolerance,
+                                      .lambda = kLambda};
+  animkit::DlsWorkspace workspace;
+  animkit_clip(
+      state, [&](const std::vector<animkit::Effector>& effectors, animkit::SkeletonPose& pose) {
+        return animkit::solve_dls_tree(clip().skeleton, {effectors}, settings, workspace, pose);
+      });
+}
+
+// FABRIK for trees with its defaults (the DLS finish on, used only by frames the passes do not
+// reach: the `finish` counter is the fraction of frames that needed it).
+void animkit_fabrik(benchmark::State& state) {
+  animkit::FabrikTreeSettings settings;
+  settings.max_iterations = kMaxIterations;
+  settings.tolerance = kTolerance;
+  animkit::FabrikTreeWorkspace workspace;
+  int solves = 0, finished = 0;
+  animkit_clip(
+      state, [&](const std::vector<animkit::Effector>& effectors, animkit::SkeletonPose& pose) {
+        auto result =
+            animkit::solve_fabrik_tree(clip().skeleton, {effectors}, settings, workspace, pose);
+        ++solves;
+        finished += result->finish_iterations > 0 ? 1 : 0;
+        return result;
+      });
+  state.counters["finish"] = static_cast<double>(finished) / solves;
+}
+
+void animkit_ccd(benchmark::State& state) {
+  animkit::CcdTreeSettings settings;
+  settings.max_iterations = kMaxIterations;
+  settings.tolerance = kTolerance;
+  animkit::CcdTreeWorkspace workspace;
+  animkit_clip(
+      state, [&](const std::vector<animkit::Effector>& effectors, animkit::SkeletonPose& pose) {
+        return animkit::solve_ccd_tree(clip().skeleton, {effectors}, settings, workspace, pose);
+      });
+}
 
 // ---- KDL -------------------------------------------------------------------------------------
 
@@ -277,7 +315,12 @@ int main(int argc, char** argv) {
       [](benchmark::State& s) { animkit_dls(s, animkit::DlsMethod::selective); })
       ->Unit(benchmark::kMillisecond)
       ->UseRealTime();
-  // FABRIK-tree: register "tree_ik/animkit_fabrik" here.
+  benchmark::RegisterBenchmark("tree_ik/animkit_fabrik", animkit_fabrik)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+  benchmark::RegisterBenchmark("tree_ik/animkit_ccd", animkit_ccd)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
   benchmark::RegisterBenchmark("tree_ik/kdl_wdls",
                                [](benchmark::State& s) { kdl_tree(s, kLambda); })
       ->Unit(benchmark::kMillisecond)
@@ -293,6 +336,10 @@ int main(int argc, char** argv) {
                        "KDL tree WDLS / animkit DLS, time per frame");
   reporter.print_ratio("tree_ik/kdl_wdls", "tree_ik/animkit_sdls", "time",
                        "KDL tree WDLS / animkit SDLS, time per frame");
+  reporter.print_ratio("tree_ik/kdl_wdls", "tree_ik/animkit_fabrik", "time",
+                       "KDL tree WDLS / animkit FABRIK, time per frame");
+  reporter.print_ratio("tree_ik/kdl_wdls", "tree_ik/animkit_ccd", "time",
+                       "KDL tree WDLS / animkit CCD, time per frame");
   benchmark::Shutdown();
   return 0;
 }

@@ -3,6 +3,7 @@
 // effector bookkeeping, joint limits applied to a local rotation, the weighted best-fit
 // rotation, and the iteration loop with its stopping rules.
 #include <Eigen/Core>
+#include <cmath>
 #include <optional>
 #include <span>
 
@@ -33,6 +34,11 @@ void index_effectors(const Skeleton& skeleton, std::span<const Effector> effecto
 /// tree_ik.h says), unit. Unchanged but normalized when `limits` is empty.
 Quat limited_local(const Skeleton& skeleton, std::span<const JointLimit> limits, int joint,
                    const Quat& local);
+
+/// Whether the unit quaternions a and b are one rotation up to rounding (q and -q are one).
+inline bool same_rotation(const Quat& a, const Quat& b) {
+  return std::abs(a.dot(b)) >= 1.0 - 1e-14;
+}
 
 /// The rotation R minimizing sum_k w_k |R u_k - v_k|^2 (Wahba's problem), accumulated pair by
 /// pair. Solved as Kabsch does: with H = sum_k w_k u_k v_k^T = U S V^T,
