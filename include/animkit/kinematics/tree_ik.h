@@ -9,10 +9,11 @@
 //
 // so the viewer and the CLI switch between them with TreeIkSolverKind. The pose is read as the
 // starting guess and overwritten with the solution (FK already run). Roots never move: their
-// local translations are kept. Every joint, roots included, may turn (never translate): the
-// lab's chain turns its root joint to swing the first bone, and tree_ik_reachable() counts the
-// root's child bones in the reach. A root that must not turn gets a limit with no range (e.g.
-// a BallLimit with swing_angle = 0 and a zero twist range).
+// local translations are kept. Every joint, roots included, may turn (never translate), in
+// every solver (FABRIK, CCD, DLS and SDLS alike): the lab's chain turns its root joint to swing
+// the first bone, and tree_ik_reachable() counts the root's child bones in the reach. A root
+// that must not turn gets a limit with no range (e.g. a BallLimit with swing_angle = 0 and a
+// zero twist range).
 //
 // Joint limits apply to a joint's rotation relative to its rest rotation,
 //   q_rel = rest_rotations[i]^-1 * local_rotations[i]
