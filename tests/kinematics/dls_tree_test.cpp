@@ -341,7 +341,7 @@ struct Dls {
 
 template <class Solver>
 void expect_tree_checks() {
-  tree_checks::limits_bones_and_roots_hold<Solver>(2000, 12);
+  tree_checks::limits_bones_and_roots_hold<Solver>(1000, 12);
   tree_checks::deterministic_and_workspace_reuse_is_invisible<Solver>(7);
 }
 
