@@ -161,9 +161,9 @@ class FabrikTreeIteration final : public detail::TreeIteration {
       sine += w * axis.dot(u.cross(v));
       cosine += w * u.dot(v);
     }
-    const double angle = sine == 0.0 && cosine >= 0.0 ? 0.0 : std::atan2(sine, cosine);
-    const Quat free_best = Quat(Eigen::AngleAxisd(angle, axis)) * rotation;
+    const Quat free_best = detail::about_axis_toward(sine, cosine, axis) * rotation;
     if (problem_.limits.empty()) return free_best;
+    const double angle = sine == 0.0 && cosine >= 0.0 ? 0.0 : std::atan2(sine, cosine);
     // When neither the joint nor the child meets its limit at the free optimum, the search could
     // only tie for these grandchildren: take it and spare the other seven candidates. Not with a
     // hinge at the child or below: a hinge turns about its axis only, so the twist decides where

@@ -40,6 +40,20 @@ inline bool same_rotation(const Quat& a, const Quat& b) {
   return std::abs(a.dot(b)) >= 1.0 - 1e-14;
 }
 
+// The rotation about the unit `axis` by atan2(sine, cosine), without the trigonometry (FABRIK's
+// forward pass runs it for most joints): its quaternion (cos a/2, sin a/2 axis) is parallel to
+// (1 + cos a, sin a) = (r + cosine, sine) / r, r = |(sine, cosine)|, and to
+// (sin a, 1 - cos a); the first is accurate for cosine >= 0, the second otherwise.
+inline Quat about_axis_toward(double sine, double cosine, const Vec3& axis) {
+  const double r = std::sqrt(sine * sine + cosine * cosine);
+  if (sine == 0.0 && cosine >= 0.0) return Quat::Identity();
+  const double w = cosine >= 0.0 ? r + cosine : sine;
+  const double s = cosine >= 0.0 ? sine : r - cosine;
+  const double n = std::sqrt(w * w + s * s);
+  const Vec3 v = axis * (s / n);
+  return Quat(w / n, v.x(), v.y(), v.z());
+}
+
 /// The rotation R minimizing sum_k w_k |R u_k - v_k|^2 (Wahba's problem), accumulated pair by
 /// pair. Solved as Kabsch does: with H = sum_k w_k u_k v_k^T = U S V^T,
 ///   R = V diag(1, 1, d) U^T,  d = sign(det(V U^T))  (a rotation, never a reflection).

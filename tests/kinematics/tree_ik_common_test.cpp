@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "animkit/core/quaternion_math.h"
@@ -14,10 +15,27 @@
 namespace animkit {
 namespace {
 
+using limit_samples::kPi;
 using limit_samples::random_axis;
 using limit_samples::random_rotation;
 using limit_samples::rotation_gap;
 using limit_samples::uniform;
+
+TEST(AboutAxisToward, IsTheRotationByAtan2OfTheSineAndCosine) {
+  std::mt19937_64 rng(4);
+  for (int k = 0; k < 2000; ++k) {
+    const Vec3 axis = random_axis(rng);
+    const double angle = uniform(rng, -kPi, kPi), scale = uniform(rng, 1e-3, 1e3);
+    const double sine = scale * std::sin(angle), cosine = scale * std::cos(angle);
+    const Quat expected(Eigen::AngleAxisd(std::atan2(sine, cosine), axis));
+    EXPECT_LE(rotation_gap(detail::about_axis_toward(sine, cosine, axis), expected), 1e-14) << k;
+    EXPECT_NEAR(detail::about_axis_toward(sine, cosine, axis).norm(), 1.0, 1e-15);
+  }
+  const Vec3 z = Vec3::UnitZ();
+  EXPECT_TRUE(detail::about_axis_toward(0.0, 0.0, z).coeffs() == Quat::Identity().coeffs());
+  EXPECT_TRUE(detail::about_axis_toward(0.0, 2.0, z).coeffs() == Quat::Identity().coeffs());
+  EXPECT_LE(rotation_gap(detail::about_axis_toward(0.0, -2.0, z), Quat(0, 0, 0, 1)), 1e-15);
+}
 
 TEST(BestFitRotation, RecoversTheRotationThatMapsThePairs) {
   std::mt19937_64 rng(1);
