@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "animkit/io/bvh.h"
+#include "animkit/kinematics/fabrik_tree.h"
 #include "limit_samples.h"
 #include "tree_ik_checks.h"
 
@@ -160,8 +161,8 @@ TEST_P(DlsTree, TracksJointlyReachableTargetsWithinLimits) {
 }
 
 // From rest to far goals in corners of the limits, a local method can stop in a local minimum
-// of the limited problem; this records how often (the fraction is printed) and that a clear
-// majority is still reached.
+// of the limited problem; this records how often (the fraction is printed: 75% for DLS, 73% for
+// SDLS when written, with the pelvis free to turn) and that a clear majority is still reached.
 TEST_P(DlsTree, ReachesMostFarReachableTargetsFromRest) {
   const Rig rig = make_rig();
   std::mt19937_64 rng(12);
@@ -178,11 +179,36 @@ TEST_P(DlsTree, ReachesMostFarReachableTargetsFromRest) {
     converged += result->converged ? 1 : 0;
   }
   std::printf("converged on %d of %d far reachable target sets from rest\n", converged, trials);
-  EXPECT_GE(converged, trials * 60 / 100);
+  EXPECT_GE(converged, trials * 70 / 100);
 }
 
 // Roots turn like every joint (tree_ik.h); this rig's pelvis gets a limit with no range, which
 // must keep it exactly as it is.
+// The same far targets through FABRIK with its DLS finish (fabrik_tree.h): the passes alone
+// reach almost none of them on this rig (hinges about z, a chest hinge about y), but the pose
+// they leave is a better start for DLS than the rest pose, so together they reach more than DLS
+// from rest (75% there, 92% here when written).
+TEST(FabrikWithDlsFinish, ReachesMoreFarReachableTargetsFromRestThanDls) {
+  const Rig rig = make_rig();
+  std::mt19937_64 rng(12);
+  FabrikTreeWorkspace ws;
+  int converged = 0, by_passes = 0;
+  const int trials = 300;
+  for (int t = 0; t < trials; ++t) {
+    const SkeletonPose goal = random_pose(rig, rng);
+    const auto effectors = effectors_of(rig.effectors, goal, false);
+    SkeletonPose pose = skeleton_rest_pose(rig.skeleton);
+    auto result = solve_fabrik_tree(rig.skeleton, {effectors, rig.limits}, {}, ws, pose);
+    ASSERT_TRUE(result) << result.error().message;
+    EXPECT_LE(worst_violation(rig, pose), 1e-9);
+    converged += result->converged ? 1 : 0;
+    by_passes += result->converged && result->finish_iterations == 0 ? 1 : 0;
+  }
+  std::printf("converged on %d of %d far reachable target sets from rest, %d by the passes\n",
+              converged, trials, by_passes);
+  EXPECT_GE(converged, trials * 90 / 100);
+}
+
 TEST_P(DlsTree, LimitsHoldOnThousandsOfRandomTargetsAndRootsAndBonesStay) {
   Rig rig = make_rig();
   rig.limits[0] = BallLimit{Vec3::UnitY(), 0.0, 0.0, 0.0};
