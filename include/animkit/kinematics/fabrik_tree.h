@@ -40,8 +40,10 @@ struct FabrikTreeSettings {
 };
 
 /// Caller-owned scratch of solve_fabrik_tree(): sized for a skeleton once (by resize() or by
-/// the first solve), after which solves on that skeleton allocate nothing. Its contents
-/// between solves mean nothing; a reused workspace gives the same bits as a fresh one.
+/// the first solve), after which solves on that skeleton allocate nothing, except that the DLS
+/// finish's workspace sizes itself (as DlsWorkspace does) in the first solve that needs it and
+/// again when the effector or orientation-target count changes. Its contents between solves
+/// mean nothing; a reused workspace gives the same bits as a fresh one.
 struct FabrikTreeWorkspace {
   TreeIkScratch scratch;
   std::vector<Vec3> desired;           ///< backward pass: where each joint is asked to go
@@ -68,7 +70,8 @@ struct FabrikTreeWorkspace {
 /// rotation about its axis (its only freedom); a joint aiming a single child also chooses its
 /// twist about that bone (which moves no child) to bring the grandchildren toward their asked
 /// positions, trying eight twists under limits, so that a hinge below can bend in the plane of
-/// its target.
+/// its target (only the free optimum when it meets no limit and no hinge lies below: the others
+/// could only tie).
 /// The solve starts by moving the pose inside the limits, stops when converged, at the cap, or
 /// when iterations stop changing anything (after bending the joints above the effectors a
 /// little, a few times, to leave singular or stuck poses), and returns the best pose seen.
