@@ -10,6 +10,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <variant>
 
 #include "tree_ik_common.h"
 
@@ -71,11 +72,68 @@ class FabrikTreeIteration final : public detail::TreeIteration {
       Vec3 toward = p[up] - desired[j];
       // The joint's current bone gives the direction when the line is undefined.
       if (toward.squaredNorm() == 0.0) toward = p[up] - p[j];
+      if (detail::is_hinge(problem_.limits, i)) toward = hinge_toward(pose, i, toward);
       const double norm = toward.norm();
       const Vec3 asked = norm > 0.0 ? Vec3(desired[j] + toward * (length / norm)) : desired[j];
       desired[up] += subtree_weight[j] * asked;
       weight[up] += subtree_weight[j];
     }
+  }
+
+  // Constrained FABRIK's backward pass (Aristidou & Lasenby 2011, section 4.1, as caliko does
+  // it for hinges): the bone from the hinge `joint`'s parent, asked along `toward` (from the
+  // joint's asked position toward the parent), is moved into the hinge's plane and its angle to
+  // the bone below clamped to the hinge's range, so that the parent is asked where the hinge
+  // can reach from. The plane is the one perpendicular to the hinge's current world axis, made
+  // perpendicular to the asked bone below. Only for a hinge with one branch of effectors below.
+  Vec3 hinge_toward(const SkeletonPose& pose, int joint, const Vec3& toward) const {
+    const auto j = static_cast<std::size_t>(joint);
+    const auto& begin = skeleton_.child_begin();
+    int below = -1;
+    for (int k = begin[j]; k < begin[j + 1]; ++k) {
+      const int c = skeleton_.child_list()[static_cast<std::size_t>(k)];
+      if (ws_.scratch.subtree_weight[static_cast<std::size_t>(c)] <= 0.0) continue;
+      if (below >= 0) return toward;  // a sub-base: several bones below
+      below = c;
+    }
+    if (below < 0) return toward;
+    const auto g = static_cast<std::size_t>(below);
+    const HingeLimit& hinge = std::get<HingeLimit>(problem_.limits[j]);
+    const Quat& rest = skeleton_.rest_rotations()[j];
+    // Signed angle from u to v about the unit a, both projected on a's plane.
+    auto angle_about = [](const Vec3& u, const Vec3& v, const Vec3& a) {
+      const Vec3 pu = u - a * a.dot(u), pv = v - a * a.dot(v);
+      return std::atan2(a.dot(pu.cross(pv)), pu.dot(pv));
+    };
+    const Vec3 shin = ws_.desired[g] - ws_.desired[j];
+    const Vec3 thigh_rest = rest.conjugate() * pose.local_translations[j];  // rest frame
+    if (shin.squaredNorm() == 0.0 || thigh_rest.squaredNorm() == 0.0) return toward;
+    const Vec3 down = shin.normalized();
+    Vec3 axis = detail::parent_rotation(skeleton_, pose, joint) * (rest * hinge.axis);
+    axis -= down * down.dot(axis);
+    if (axis.squaredNorm() < 1e-18) return toward;
+    axis.normalize();
+    // At hinge angle theta the bone below is turned by theta about the axis from where it is at
+    // rest relative to the bone above: their angle about the axis is rest_angle + theta.
+    const double rest_angle = angle_about(thigh_rest, pose.local_translations[g], hinge.axis);
+    const double angle = angle_about(-toward, shin, axis);
+    double theta = angle - rest_angle;
+    theta -= 2.0 * std::numbers::pi * std::round(theta / (2.0 * std::numbers::pi));
+    if (theta < hinge.min_angle || theta > hinge.max_angle) {
+      auto gap = [&](double end) {
+        const double d = theta - end;
+        return std::abs(d - 2.0 * std::numbers::pi * std::round(d / (2.0 * std::numbers::pi)));
+      };
+      theta = gap(hinge.min_angle) <= gap(hinge.max_angle) ? hinge.min_angle : hinge.max_angle;
+    }
+    // The bone above, pointing down to the joint: the bone below turned back by the angle, plus
+    // its rest component along the axis.
+    const Vec3 unit_rest = thigh_rest.normalized();
+    const double along = unit_rest.dot(hinge.axis);
+    const double across = std::sqrt(std::max(0.0, 1.0 - along * along));
+    const Vec3 thigh =
+        across * (Eigen::AngleAxisd(-(rest_angle + theta), axis) * down) + along * axis;
+    return -thigh * toward.norm();
   }
 
   // A&L 2011, Alg. 1's forward loop as rotations: p_{i+1}' = p_i' + len (p_{i+1}' - p_i') /

@@ -75,7 +75,9 @@ TEST(FabrikTree, TheDlsFinishsSettingsAreValidatedWithTheirOwnMessage) {
 // FABRIK with its DLS finish (the default) reaches what is asserted; the passes alone reach at
 // least what they reached when the test was written, less a small margin (their misses: slow
 // convergence within 100 iterations, and with hinges, fixed points of the passes short of the
-// targets; see fabrik_tree.h).
+// targets; see fabrik_tree.h). The hinge clamp in the backward pass took the passes alone from
+// 4.5% to 56.5% with hinges on the figure and from 46.5% to 50% on the CMU skeleton; with the
+// finish, the figure's hinges went from 99% to 96% (DLS starts from other fixed points).
 TEST(FabrikTree, ReachesJointlyReachableTargetsOnAFigure) {
   const Skeleton s = tree_samples::figure();
   const auto joints = tree_samples::joints_named(s, {"l_hand", "r_hand", "l_foot", "r_foot"});
@@ -89,12 +91,12 @@ TEST(FabrikTree, ReachesJointlyReachableTargetsOnAFigure) {
   EXPECT_GE(f.free, 1.0) << tree_checks::describe(f);
   EXPECT_GE(f.oriented, 1.0) << tree_checks::describe(f);
   EXPECT_GE(f.balls, 1.0) << tree_checks::describe(f);
-  EXPECT_GE(f.hinges, 0.99) << tree_checks::describe(f);
+  EXPECT_GE(f.hinges, 0.95) << tree_checks::describe(f);
   EXPECT_GE(only.free_default, 0.83) << tree_checks::describe(only);
   EXPECT_GE(only.free, 0.97) << tree_checks::describe(only);
   EXPECT_GE(only.oriented, 0.97) << tree_checks::describe(only);
   EXPECT_GE(only.balls, 0.94) << tree_checks::describe(only);
-  EXPECT_GE(only.hinges, 0.01) << tree_checks::describe(only);
+  EXPECT_GE(only.hinges, 0.55) << tree_checks::describe(only);
 }
 
 TEST(FabrikTree, ReachesJointlyReachableTargetsOnTheCmuSkeleton) {
@@ -116,7 +118,7 @@ TEST(FabrikTree, ReachesJointlyReachableTargetsOnTheCmuSkeleton) {
   EXPECT_GE(only.free, 0.99) << tree_checks::describe(only);
   EXPECT_GE(only.oriented, 0.99) << tree_checks::describe(only);
   EXPECT_GE(only.balls, 0.84) << tree_checks::describe(only);
-  EXPECT_GE(only.hinges, 0.40) << tree_checks::describe(only);
+  EXPECT_GE(only.hinges, 0.48) << tree_checks::describe(only);
 }
 
 }  // namespace

@@ -58,7 +58,10 @@ struct FabrikTreeWorkspace {
 ///    other joint with effectors below it to the weighted centroid (weights: the effector
 ///    weights of each branch) of the positions its children's branches ask for, each at bone
 ///    length from that child's new position toward the joint's current position; a sub-base
-///    (several such children) is the centroid of its branches (A&L 2011, section 5);
+///    (several such children) is the centroid of its branches (A&L 2011, section 5); below a
+///    hinge with one branch under it, the bone above is asked into the hinge's plane at an
+///    angle to the bone below within the hinge's range (constrained FABRIK, A&L 2011 section
+///    4.1, as caliko does for hinges), so the parent is asked where the hinge can reach from;
 ///  - forward pass, roots outward (roots stay where they are): each joint with effectors below
 ///    turns so that its children's bones point at their backward-pass positions (the shortest
 ///    arc for one child, the weighted best-fit rotation for several), the turn is constrained
@@ -80,8 +83,9 @@ struct FabrikTreeWorkspace {
 /// FabrikRotations::from_previous). Returns the validate_tree_ik() or settings error for
 /// invalid input.
 ///
-/// Limits of the method: the backward pass does not know the limits, so with hinged knees and
-/// elbows the passes can settle in a fixed point short of a target the limits allow; and
+/// Limits of the method: the backward pass knows the hinges only (not the balls' cones and
+/// twists, nor the hinge axis's own motion as the joint above turns), so with hinged knees and
+/// elbows the passes can still settle in a fixed point short of a target the limits allow; and
 /// several effectors pulling one rigid sub-base converge slowly, so 100 iterations reach fewer
 /// jointly reachable targets than 1000 (the tests measure both). Both are what the DLS finish
 /// (FabrikTreeSettings::finish_with_dls, on by default) is for; the tests measure FABRIK with
