@@ -87,7 +87,8 @@ Result<LimitedArm> limited_arm(const IkArgs& args) {
   if (!set) return fail(set.error().message);
   auto limits = bind_joint_limits(*set, skeleton->names());
   if (!limits) {
-    return fail(args.limits + ": " + limits.error().message + " (the lab arm's joints are joint0 to joint" +
+    return fail(args.limits + ": " + limits.error().message +
+                " (the lab arm's joints are joint0 to joint" +
                 std::to_string(skeleton->joint_count() - 1) + ")");
   }
   return LimitedArm{std::move(*skeleton), std::move(*limits), *solver};
@@ -174,12 +175,11 @@ int run(const IkArgs& args) {
   auto pictures = PictureOutput::open(picture_args, output->has_folder(), kIkVideoFps);
   if (!pictures) return report_error(pictures.error().message);
   const auto run =
-      arm ? run_skeleton_drawing(arm->skeleton, arm->skeleton.joint_count() - 1, arm->limits,
-                                 trajectory.targets,
-                                 SkeletonDrawingOptions{arm->solver, options.ik.max_iterations,
-                                                        options.ik.tolerance, options.laps,
-                                                        options.warm_start},
-                                 trajectory.pen_down)
+      arm ? run_skeleton_drawing(
+                arm->skeleton, arm->skeleton.joint_count() - 1, arm->limits, trajectory.targets,
+                SkeletonDrawingOptions{arm->solver, options.ik.max_iterations, options.ik.tolerance,
+                                       options.laps, options.warm_start},
+                trajectory.pen_down)
           : run_drawing(*chain, trajectory.targets, options, trajectory.pen_down);
   if (!run) return report_error(run.error().message);
   if (args.picture_frame && *args.picture_frame >= static_cast<int>(run->frames.size())) {
@@ -241,10 +241,12 @@ std::function<int()> add_ik_command(CLI::App& app) {
   CLI::Option* cold_start =
       ik->add_flag("--cold-start", args->cold_start,
                    "Solve every target from the rest pose instead of the previous frame's pose");
-  CLI::Option* fabrik_rotations = ik->add_option("--fabrik-rotations", args->fabrik_rotations,
-                 "How FABRIK recovers joint rotations: rest (the lab's, shortest arc from the rest "
-                 "bone) or previous (smallest change from the last frame, no twist jumps)")
-      ->capture_default_str();
+  CLI::Option* fabrik_rotations =
+      ik->add_option(
+            "--fabrik-rotations", args->fabrik_rotations,
+            "How FABRIK recovers joint rotations: rest (the lab's, shortest arc from the rest "
+            "bone) or previous (smallest change from the last frame, no twist jumps)")
+          ->capture_default_str();
   ik->add_option("--limits", args->limits,
                  "Joint limits JSON (joint0..joint4, degrees; e.g. data/limits/lab_arm.json): the "
                  "arm runs as a one-branch skeleton through the tree solvers with these limits")

@@ -12,8 +12,8 @@
 #include "cloth_study_command.h"
 #include "demo_command.h"
 #include "footlock_command.h"
-#include "reach_command.h"
 #include "ik_command.h"
+#include "reach_command.h"
 
 namespace {
 
@@ -29,7 +29,8 @@ int check_standard_output(int code) {
 
 int run(CLI::App& app, int argc, char** argv) {
   app.description(
-      "animkit: inverse kinematics (CCD, FABRIK), foot locking and hand reaching of BVH characters, mass-spring cloth, "
+      "animkit: inverse kinematics (CCD, FABRIK), foot locking and hand reaching of BVH "
+      "characters, mass-spring cloth, "
       "headless.\n"
       "Run `animkit <command> --help` for a command's options.");
   app.require_subcommand(1);

@@ -80,10 +80,10 @@ int run(ReachArgs args) {
   if (!legs) return report_error(args.in + ": " + legs.error().message);
   const int hand = find_hand(*skeleton, args.hand == "left");
   if (hand < 0) {
-    return report_error(args.in + ": no " + args.hand + " hand (looked for " +
-                        (args.hand == "left" ? "lhand, LeftHand, LeftWrist"
-                                             : "rhand, RightHand, RightWrist") +
-                        ")");
+    return report_error(
+        args.in + ": no " + args.hand + " hand (looked for " +
+        (args.hand == "left" ? "lhand, LeftHand, LeftWrist" : "rhand, RightHand, RightWrist") +
+        ")");
   }
 
   std::vector<JointLimit> limits;
@@ -124,7 +124,7 @@ int run(ReachArgs args) {
     return report_error(ok.error().message);
   }
   const std::string hand_name = skeleton->names()[static_cast<std::size_t>(hand)];
-  const ReachLabel label{args.in, args.frame, hand_name,         args.solver,
+  const ReachLabel label{args.in,      args.frame, hand_name, args.solver,
                          limits_label, args.scale, target};
   if (auto ok = write_reach_report(output->dir(), label, *result, *skeleton, before, pose, feet);
       !ok) {
@@ -137,15 +137,16 @@ int run(ReachArgs args) {
       "reach: %s frame %d, %s to %s with %s: hand error %.3f cm, foot drift %.4f cm, %d "
       "iterations, %.3f ms\n",
       args.in.c_str(), args.frame, hand_name.c_str(), to_string(target).c_str(),
-      args.solver.c_str(), 100.0 * r.hand_error, 100.0 * r.foot_drift, r.ik.iterations,
-      r.solve_ms);
+      args.solver.c_str(), 100.0 * r.hand_error, 100.0 * r.foot_drift, r.ik.iterations, r.solve_ms);
   if (!r.ik.reachable) {
-    std::printf("unreachable: the target is farther than the arm and spine reach; wrote the "
-                "closest pose\n");
+    std::printf(
+        "unreachable: the target is farther than the arm and spine reach; wrote the "
+        "closest pose\n");
   } else if (!r.reached) {
-    std::printf("not reached: the limits (or the iteration cap) stop the hand %.3f cm short; "
-                "wrote the closest pose\n",
-                100.0 * r.hand_error);
+    std::printf(
+        "not reached: the limits (or the iteration cap) stop the hand %.3f cm short; "
+        "wrote the closest pose\n",
+        100.0 * r.hand_error);
   }
   std::printf("wrote reached.bvh, metrics.json, reach.png to %s\n", args.out.c_str());
   return 0;
@@ -163,15 +164,15 @@ std::function<int()> add_reach_command(CLI::App& app) {
   cmd->add_option("--in", args->in, "The BVH clip (legs named Left/RightHip, Knee, Ankle)")
       ->required();
   cmd->add_option("--frame", args->frame, "The frame that reaches (from 0)")->capture_default_str();
-  cmd->add_option("--hand", args->hand, "left or right (joint lhand/rhand, LeftHand/RightHand or "
-                                        "LeftWrist/RightWrist)")
+  cmd->add_option("--hand", args->hand,
+                  "left or right (joint lhand/rhand, LeftHand/RightHand or "
+                  "LeftWrist/RightWrist)")
       ->capture_default_str();
   cmd->add_option("--target", args->target, "Where the hand goes: X Y Z in metres (world)")
       ->expected(3)
       ->allow_extra_args(false)
       ->required();
-  cmd->add_option("--scale", args->scale,
-                  "Metres per file unit (CMU's BVH: 0.056444)")
+  cmd->add_option("--scale", args->scale, "Metres per file unit (CMU's BVH: 0.056444)")
       ->capture_default_str();
   cmd->add_option("--limits", args->limits,
                   "Joint limits JSON keyed by joint name, degrees (default: the built-in human "

@@ -30,8 +30,8 @@ Point2 project(const Vec3& p, const View& view) {
   return Point2(p[view.right], p.y());
 }
 
-void add_bones(LinePlot& plot, const Skeleton& skeleton, const SkeletonPose& pose,
-               const View& view, PlotColor color, double width) {
+void add_bones(LinePlot& plot, const Skeleton& skeleton, const SkeletonPose& pose, const View& view,
+               PlotColor color, double width) {
   for (int j = 0; j < skeleton.joint_count(); ++j) {
     const int parent = skeleton.parents()[static_cast<std::size_t>(j)];
     if (parent < 0) continue;
@@ -48,7 +48,8 @@ void add_bones(LinePlot& plot, const Skeleton& skeleton, const SkeletonPose& pos
 // A cross (or, small, a dot) of half-size `r` at `p`.
 void add_mark(LinePlot& plot, const Point2& p, double r, PlotColor color, double width) {
   plot.series.push_back(PlotSeries{{p - Point2(r, r), p + Point2(r, r)}, color, width, 1.0, false});
-  plot.series.push_back(PlotSeries{{p - Point2(r, -r), p + Point2(r, -r)}, color, width, 1.0, false});
+  plot.series.push_back(
+      PlotSeries{{p - Point2(r, -r), p + Point2(r, -r)}, color, width, 1.0, false});
 }
 
 LinePlot view_plot(const Skeleton& skeleton, const SkeletonPose& before, const SkeletonPose& after,

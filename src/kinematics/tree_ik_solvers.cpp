@@ -17,8 +17,7 @@ Result<TreeIkResult> solve_tree_ik(TreeIkSolverKind kind, const Skeleton& skelet
       return solve_ccd_tree(skeleton, problem, solvers.ccd, solvers.ccd_workspace, pose);
     case TreeIkSolverKind::dls:
     case TreeIkSolverKind::sdls:
-      solvers.dls.method =
-          kind == TreeIkSolverKind::dls ? DlsMethod::damped : DlsMethod::selective;
+      solvers.dls.method = kind == TreeIkSolverKind::dls ? DlsMethod::damped : DlsMethod::selective;
       return solve_dls_tree(skeleton, problem, solvers.dls, solvers.dls_workspace, pose);
   }
   return fail("unknown tree IK solver");

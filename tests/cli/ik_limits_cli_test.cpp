@@ -119,8 +119,8 @@ TEST(IkLimitsCli, FreeLimitsDrawThePathOfTheChainSolver) {
 }
 
 TEST(IkLimitsCli, SingleTargetWithLimitsPrintsTheTreeSolversResult) {
-  const auto r = run_command(kCli + " ik --target 0.3,0,0.2 --solver sdls --limits " +
-                             kLabArmLimits.string());
+  const auto r =
+      run_command(kCli + " ik --target 0.3,0,0.2 --solver sdls --limits " + kLabArmLimits.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("solver       sdls"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("joint 4"), std::string::npos) << r.out;

@@ -69,10 +69,10 @@ TEST(ReachCli, EverySolverReachesWithTheFeetPlanted) {
 
   for (const char* solver : {"dls", "sdls", "fabrik", "ccd"}) {
     const fs::path out = fresh_dir(solver) / "run";
-    const auto r = run_command(kCli + " reach --in " + kWalk.string() + " --scale 0.056444" +
-                               " --frame " + std::to_string(kFrame) + " --hand left" +
-                               target_args(target) + " --solver " + solver + " --out " +
-                               out.string());
+    const auto r =
+        run_command(kCli + " reach --in " + kWalk.string() + " --scale 0.056444" + " --frame " +
+                    std::to_string(kFrame) + " --hand left" + target_args(target) + " --solver " +
+                    solver + " --out " + out.string());
     ASSERT_EQ(r.exit_code, 0) << solver << ": " << r.err;
     EXPECT_EQ(r.out.find("unreachable"), std::string::npos) << r.out;
     EXPECT_EQ(r.out.find("not reached"), std::string::npos) << r.out;
@@ -89,8 +89,7 @@ TEST(ReachCli, EverySolverReachesWithTheFeetPlanted) {
     EXPECT_EQ(metrics["root_drift_cm"].get<double>(), 0.0) << solver;
     EXPECT_GE(metrics["iterations"].get<int>(), 1);
     EXPECT_TRUE(metrics.contains("solve_ms"));
-    EXPECT_NE(metrics["limits"].get<std::string>().find("default human limits"),
-              std::string::npos);
+    EXPECT_NE(metrics["limits"].get<std::string>().find("default human limits"), std::string::npos);
 
     // reached.bvh: the one reached frame, in file units; read back, the hand is on the target,
     // the feet and root where the walk had them.
@@ -107,8 +106,9 @@ TEST(ReachCli, EverySolverReachesWithTheFeetPlanted) {
     EXPECT_LT(after.local_rotations[root].angularDistance(before.local_rotations[root]), 1e-6);
     // The right arm plays no part: it keeps its pose relative to the chest.
     const int right_hand = skeleton->find_joint("rhand");
-    const Vec3 right_before = before.global_rotations[chest].conjugate() *
-                              (before.global_positions[right_hand] - before.global_positions[chest]);
+    const Vec3 right_before =
+        before.global_rotations[chest].conjugate() *
+        (before.global_positions[right_hand] - before.global_positions[chest]);
     const Vec3 right_after = after.global_rotations[chest].conjugate() *
                              (after.global_positions[right_hand] - after.global_positions[chest]);
     EXPECT_LT((right_after - right_before).norm(), 1e-4) << solver;
@@ -123,8 +123,7 @@ TEST(ReachCli, EverySolverReachesWithTheFeetPlanted) {
 TEST(ReachCli, UnreachableTargetWritesTheClosestPoseAndSaysSo) {
   const fs::path out = fresh_dir("far") / "run";
   const auto r = run_command(kCli + " reach --in " + kWalk.string() +
-                             " --scale 0.056444 --hand right --target 5 1 0 --out " +
-                             out.string());
+                             " --scale 0.056444 --hand right --target 5 1 0 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("unreachable"), std::string::npos) << r.out;
   const auto metrics = nlohmann::json::parse(read_file(out / "metrics.json"));
@@ -152,7 +151,8 @@ TEST(ReachCli, BadInputIsOneLineAndWritesNothing) {
        "--target must be three finite numbers X Y Z (metres), got (nan, 1, 0)"},
       {"reach" + in + " --target 0 inf 0", "--target must be three finite numbers"},
       {"reach" + in + " --target 1 2", "--target"},
-      {"reach" + in + " --target 0 1 0 --hand middle", "--hand must be left or right, got 'middle'"},
+      {"reach" + in + " --target 0 1 0 --hand middle",
+       "--hand must be left or right, got 'middle'"},
       {"reach" + in + " --target 0 1 0 --frame 994", "--frame must be in [0, 993]"},
       {"reach" + in + " --target 0 1 0 --frame -1", "--frame must be in [0, 993]"},
       {"reach" + in + " --target 0 1 0 --solver jacobian",

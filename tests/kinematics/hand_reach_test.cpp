@@ -66,14 +66,13 @@ TEST(HandReach, EverySolverReachesWithFeetAndRootHeld) {
       }
       EXPECT_EQ(result->root_drift, 0.0);
       EXPECT_EQ(pose.global_positions[f.root], start.global_positions[f.root]);
-      EXPECT_LT(pose.local_rotations[f.root].angularDistance(start.local_rotations[f.root]),
-                1e-9);
+      EXPECT_LT(pose.local_rotations[f.root].angularDistance(start.local_rotations[f.root]), 1e-9);
       EXPECT_LE(tree_samples::max_violation(f.s, f.limits, pose), 1e-9);
       // The other arm and the head keep their pose relative to the chest.
-      EXPECT_LT((pose.local_rotations[right_hand].coeffs() -
-                 start.local_rotations[right_hand].coeffs())
-                    .norm(),
-                1e-12);
+      EXPECT_LT(
+          (pose.local_rotations[right_hand].coeffs() - start.local_rotations[right_hand].coeffs())
+              .norm(),
+          1e-12);
       const Vec3 rel_before = start.global_rotations[chest].conjugate() *
                               (start.global_positions[right_hand] - start.global_positions[chest]);
       const Vec3 rel_after = pose.global_rotations[chest].conjugate() *

@@ -1,13 +1,14 @@
 // The lab's drawing session on a skeleton (skeleton_drawing_session.h): without limits it draws
 // what the chain session draws; with limits every frame stays inside them; bad input is refused
 // with the chain session's words.
+#include "animkit/kinematics/skeleton_drawing_session.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
 #include "animkit/core/quaternion_math.h"
-#include "animkit/kinematics/skeleton_drawing_session.h"
 #include "animkit/trajectory/lab_shapes.h"
 
 namespace animkit {

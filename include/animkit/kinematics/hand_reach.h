@@ -30,22 +30,22 @@ struct HandReachSettings {
 };
 
 struct HandReachResult {
-  TreeIkResult ik;           ///< the solve (error: the largest over hand and feet)
-  double hand_error = 0.0;   ///< |hand - target| after the solve (scene units)
-  double foot_drift = 0.0;   ///< largest distance a foot moved (scene units)
-  double root_drift = 0.0;   ///< distance the root moved (0 unless a solver broke its promise)
-  bool reached = false;      ///< hand_error and foot_drift both within the tolerance
-  double solve_ms = 0.0;     ///< wall-clock time of the solve (milliseconds)
+  TreeIkResult ik;          ///< the solve (error: the largest over hand and feet)
+  double hand_error = 0.0;  ///< |hand - target| after the solve (scene units)
+  double foot_drift = 0.0;  ///< largest distance a foot moved (scene units)
+  double root_drift = 0.0;  ///< distance the root moved (0 unless a solver broke its promise)
+  bool reached = false;     ///< hand_error and foot_drift both within the tolerance
+  double solve_ms = 0.0;    ///< wall-clock time of the solve (milliseconds)
 };
 
 /// Solves `pose` (FK run; the starting pose, overwritten with the reached one) so that joint
 /// `hand` reaches `target` while the joints `feet` stay where they are. `limits`: one per joint
 /// of the skeleton, or empty for free joints; only the limits of joints between the root and
 /// an effector are used (the others never turn, so the clip's pose of them is kept even where
-/// it breaks their limit), and the roots' are replaced by the zero-range limit that holds them. The reached pose is the solver's best even when the target is out
-/// of reach (ik.reachable false) or the limits stop the hand short (reached false).
-/// Errors: a bad joint index (hand or feet not distinct, a root), a non-finite target, a limits
-/// span of the wrong size, bad settings.
+/// it breaks their limit), and the roots' are replaced by the zero-range limit that holds them. The
+/// reached pose is the solver's best even when the target is out of reach (ik.reachable false) or
+/// the limits stop the hand short (reached false). Errors: a bad joint index (hand or feet not
+/// distinct, a root), a non-finite target, a limits span of the wrong size, bad settings.
 Result<HandReachResult> reach_hand(const Skeleton& skeleton, std::span<const JointLimit> limits,
                                    int hand, std::array<int, 2> feet, const Vec3& target,
                                    const HandReachSettings& settings, SkeletonPose& pose);
