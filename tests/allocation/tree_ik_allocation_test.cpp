@@ -12,6 +12,7 @@
 #include "animkit/kinematics/dls_tree.h"
 #include "animkit/kinematics/fabrik_tree.h"
 #include "animkit/kinematics/tree_ik_solver.h"
+#include "animkit/kinematics/tree_ik_solvers.h"
 #include "animkit/kinematics/two_bone_ik.h"
 #include "counting_malloc.h"
 
@@ -107,6 +108,32 @@ TEST(TreeIkAllocation, TwoBoneSolvesAllocateNothing) {
   const auto result = solve_two_bone(input);
   EXPECT_EQ(count.value(), 0u);
   EXPECT_TRUE(result);
+}
+
+// solve_tree_ik() (tree_ik_solvers.h), as the CLI's --solver switch uses it: one TreeIkSolvers
+// warmed once per solver, then the solvers taken in turn (DLS and SDLS share a workspace).
+TEST(TreeIkAllocation, SolveTreeIkBySolverKindAllocatesNothingWhenWarm) {
+  const Skeleton s = figure();
+  const std::vector<int> joints = joints_named(s, {"l_hand", "r_hand", "l_foot", "r_foot"});
+  const std::vector<JointLimit> limits = body_limits(s, true);
+  std::mt19937_64 rng(5);
+  TreeIkSolvers solvers;
+  SkeletonPose pose = skeleton_rest_pose(s);
+  for (int trial = 0; trial < 24; ++trial) {
+    const TreeIkSolverKind kind = all_tree_ik_solvers()[static_cast<std::size_t>(trial) % 4];
+    const SkeletonPose target = random_pose(s, limits, rng, 1.0);
+    const std::vector<Effector> effectors = effectors_at(target, joints, false);
+    std::size_t made = 0;
+    Result<TreeIkResult> result;
+    {
+      AllocationCount count;
+      result = solve_tree_ik(kind, s, TreeIkProblem{effectors, limits}, solvers, pose);
+      made = count.value();
+    }
+    ASSERT_TRUE(result);
+    if (trial < 4) continue;  // the first solve of each kind sizes its workspace
+    EXPECT_EQ(made, 0u) << to_string(kind) << ", trial " << trial;
+  }
 }
 
 }  // namespace
