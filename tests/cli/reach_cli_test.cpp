@@ -173,4 +173,16 @@ TEST(ReachCli, BadInputIsOneLineAndWritesNothing) {
   }
 }
 
+TEST(ReachCli, HelpExplainsEveryOption) {
+  const auto r = run_command(kCli + " reach --help");
+  ASSERT_EQ(r.exit_code, 0);
+  for (const char* option : {"--in", "--frame", "--hand", "--target", "--scale", "--limits",
+                             "--solver", "--max-iterations", "--tolerance", "--out"}) {
+    EXPECT_NE(r.out.find(option), std::string::npos) << option;
+  }
+  const auto ik = run_command(kCli + " ik --help");
+  EXPECT_NE(ik.out.find("--limits"), std::string::npos);
+  EXPECT_NE(run_command(kCli + " --help").out.find("reach"), std::string::npos);
+}
+
 }  // namespace

@@ -45,7 +45,10 @@ struct HandReachResult {
 /// it breaks their limit), and the roots' are replaced by the zero-range limit that holds them. The
 /// reached pose is the solver's best even when the target is out of reach (ik.reachable false) or
 /// the limits stop the hand short (reached false). Errors: a bad joint index (hand or feet not
-/// distinct, a root), a non-finite target, a limits span of the wrong size, bad settings.
+/// distinct, a root), a non-finite target, a limits span of the wrong size, bad settings; the
+/// pose is then untouched. A one-off call: it builds a copy of the skeleton (the roots' rest
+/// rotations set to the pose's) and the solvers' workspaces, so it allocates; FABRIK may move
+/// the feet (see foot_drift; README "animkit reach"), DLS (the default) holds them.
 Result<HandReachResult> reach_hand(const Skeleton& skeleton, std::span<const JointLimit> limits,
                                    int hand, std::array<int, 2> feet, const Vec3& target,
                                    const HandReachSettings& settings, SkeletonPose& pose);
