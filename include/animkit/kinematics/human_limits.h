@@ -1,0 +1,30 @@
+#pragma once
+// Plausible joint limits for a human skeleton whose joints carry the usual names (CMU's BVH:
+// LeftKnee, RightElbow, ...), for when no limits file is given: knees and elbows are hinges
+// that bend one way, every other joint below the root a ball with a wide cone and a twist
+// range. Rough anatomy, not a medical model: enough to show what limits do and to keep a
+// dragged limb from bending backwards.
+#include <vector>
+
+#include "animkit/kinematics/joint_limits.h"
+#include "animkit/kinematics/skeleton.h"
+
+namespace animkit {
+
+/// The hinge range of knees and elbows, radians: the rest pose (0) to 150 degrees of flexion.
+inline constexpr double kHumanHingeFlexion = 2.6179938779914944;
+/// How far past straight a knee or elbow may go, radians: 5 degrees.
+inline constexpr double kHumanOverextension = 0.087266462599716474;
+/// A ball joint's cone half-angle and twist range (+-), radians: 120 and 90 degrees.
+inline constexpr double kHumanBallSwing = 2.0943951023931957;
+inline constexpr double kHumanBallTwist = 1.5707963267948966;
+
+/// One limit per joint: roots free; a joint whose name contains "knee" (any case) a hinge
+/// about a = bone x +z (the body faces +z) flexing the bone backwards (-z: angles in
+/// [-kHumanHingeFlexion, kHumanOverextension]), a joint named "elbow" the same hinge flexing
+/// forwards ([-kHumanOverextension, kHumanHingeFlexion]); every other joint a ball
+/// about its bone (the offset of its first child with a non-zero offset, else +y) with swing
+/// kHumanBallSwing and twist +-kHumanBallTwist. Axes in the joint's rest frame.
+std::vector<JointLimit> human_joint_limits(const Skeleton& skeleton);
+
+}  // namespace animkit
