@@ -1,6 +1,7 @@
 #include "animkit/kinematics/human_limits.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cctype>
 #include <string>
 
@@ -47,6 +48,29 @@ std::vector<JointLimit> human_joint_limits(const Skeleton& skeleton) {
     }
   }
   return limits;
+}
+
+void fit_hinge_axes(const Skeleton& skeleton, const SkeletalMotion& motion,
+                    std::vector<JointLimit>& limits) {
+  assert(motion.joint_count == skeleton.joint_count());
+  assert(static_cast<int>(limits.size()) == skeleton.joint_count());
+  const int frames = motion.frame_count();
+  if (frames == 0) return;
+  for (int j = 0; j < skeleton.joint_count(); ++j) {
+    auto* hinge = std::get_if<HingeLimit>(&limits[j]);
+    if (!hinge) continue;
+    Vec3 sum = Vec3::Zero();
+    for (int f = 0; f < frames; ++f) {
+      const Quat q = skeleton.rest_rotations()[j].conjugate() *
+                     motion.local_rotations[static_cast<std::size_t>(f) * motion.joint_count + j];
+      const Eigen::AngleAxisd turn(q);
+      // A rotation by a about n is one by -a about -n: count it on the hinge axis' side.
+      const Vec3 vector = turn.angle() * turn.axis();
+      sum += vector.dot(hinge->axis) >= 0.0 ? vector : Vec3(-vector);
+    }
+    if (sum.norm() / frames < 0.05) continue;
+    hinge->axis = sum.normalized();
+  }
 }
 
 }  // namespace animkit

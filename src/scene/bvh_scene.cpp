@@ -69,7 +69,10 @@ Result<BvhScene> BvhScene::create(Skeleton skeleton, SkeletalMotion motion,
     return fail("the motion's frame time must be > 0 seconds, got " +
                 std::to_string(motion.frame_time));
   }
-  if (limits.empty()) limits = human_joint_limits(skeleton);
+  if (limits.empty()) {
+    limits = human_joint_limits(skeleton);
+    fit_hinge_axes(skeleton, motion, limits);
+  }
   if (static_cast<int>(limits.size()) != joints) {
     return fail("got " + std::to_string(limits.size()) + " joint limits for " +
                 std::to_string(joints) + " joints");

@@ -119,7 +119,7 @@ TEST(BvhScene, HoldingRefusesRootsBadJointsAndNonFiniteTargets) {
   EXPECT_EQ(root.error().message, "joint Hips is a root: IK turns joints but never moves a root");
   auto out_of_range = scene.hold(99, Vec3::Zero());
   ASSERT_FALSE(out_of_range);
-  EXPECT_EQ(out_of_range.error().message, "no joint 99 (the skeleton has 31)");
+  EXPECT_EQ(out_of_range.error().message, "no joint 99 (the skeleton has 38)");
   auto nan = scene.hold(3, Vec3(0, std::nan(""), 0));
   ASSERT_FALSE(nan);
   EXPECT_EQ(nan.error().message, "the target of LeftKnee is not finite");
@@ -163,12 +163,12 @@ TEST(BvhScene, FootLockingSwapsTheClipAndItsTrailsSlideLess) {
 TEST(BvhScene, WithoutLegsThereIsNoFootLockAndTheSceneStillPlays) {
   SkeletonDesc d;
   d.add_joint("root", -1, Vec3(0, 1, 0));
-  d.add_joint("arm", 0, Vec3(0, 0.5, 0));
+  d.add_joint("shoulder", 0, Vec3(0, 0.5, 0));
+  d.add_joint("hand", 1, Vec3(0, 0.5, 0));
   Skeleton s = build_skeleton(d).value();
-  SkeletalMotion m = make_motion(2, 3, 0.1);
+  SkeletalMotion m = make_motion(3, 3, 0.1);
   for (int f = 0; f < 3; ++f) {
-    m.local_translations[f * 2] = Vec3(0, 1, 0);
-    m.local_translations[f * 2 + 1] = Vec3(0, 0.5, 0);
+    for (int j = 0; j < 3; ++j) m.local_translations[f * 3 + j] = s.rest_offsets()[j];
   }
   auto scene = BvhScene::create(std::move(s), m, {});
   ASSERT_TRUE(scene) << scene.error().message;
@@ -178,8 +178,9 @@ TEST(BvhScene, WithoutLegsThereIsNoFootLockAndTheSceneStillPlays) {
   ASSERT_FALSE(lock);
   EXPECT_EQ(lock.error().message, scene->foot_lock_problem());
   EXPECT_TRUE(scene->foot_trail(0, false).empty());
-  ASSERT_TRUE(scene->hold(1, Vec3(0.5, 1.0, 0.0)));
-  EXPECT_LE((scene->pose().global_positions[1] - Vec3(0.5, 1.0, 0.0)).norm(), 1e-3);
+  // The shoulder swings the hand a quarter turn (inside its 120 degree cone).
+  ASSERT_TRUE(scene->hold(2, Vec3(0.5, 1.5, 0.0)));
+  EXPECT_LE((scene->pose().global_positions[2] - Vec3(0.5, 1.5, 0.0)).norm(), 1e-3);
 }
 
 TEST(BvhScene, RefusesAMotionOrLimitsThatDoNotFit) {
@@ -187,11 +188,11 @@ TEST(BvhScene, RefusesAMotionOrLimitsThatDoNotFit) {
   SkeletalMotion wrong = make_motion(3, 2, 0.1);
   auto a = BvhScene::create(walk.skeleton, wrong, {});
   ASSERT_FALSE(a);
-  EXPECT_EQ(a.error().message, "the motion has 3 joints, the skeleton 31");
+  EXPECT_EQ(a.error().message, "the motion has 3 joints, the skeleton 38");
   auto b = BvhScene::create(walk.skeleton, walk.motion, std::vector<JointLimit>(2, FreeJoint{}));
   ASSERT_FALSE(b);
-  EXPECT_EQ(b.error().message, "got 2 joint limits for 31 joints");
-  std::vector<JointLimit> limits(31, FreeJoint{});
+  EXPECT_EQ(b.error().message, "got 2 joint limits for 38 joints");
+  std::vector<JointLimit> limits(38, FreeJoint{});  // 31 joints and 7 end sites
   limits[3] = HingeLimit{Vec3(2, 0, 0), 0.0, 1.0};
   auto c = BvhScene::create(walk.skeleton, walk.motion, limits);
   ASSERT_FALSE(c);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "animkit/kinematics/joint_limits.h"
+#include "animkit/kinematics/skeletal_motion.h"
 #include "animkit/kinematics/skeleton.h"
 
 namespace animkit {
@@ -26,5 +27,14 @@ inline constexpr double kHumanBallTwist = 1.5707963267948966;
 /// about its bone (the offset of its first child with a non-zero offset, else +y) with swing
 /// kHumanBallSwing and twist +-kHumanBallTwist. Axes in the joint's rest frame.
 std::vector<JointLimit> human_joint_limits(const Skeleton& skeleton);
+
+/// Turns each hinge's axis to the axis `motion` actually bends that joint about: the mean of
+/// its rotation vectors relative to rest over the clip (each taken on the side of the current
+/// axis, so the flexion keeps its sign). A captured elbow does not bend about the axis a
+/// skeleton's rest pose suggests (CMU's are 30 degrees off, a carrying angle); a hinge about
+/// the wrong axis would refuse most of the clip. Hinges the clip barely bends (a mean turn
+/// under 0.05 rad) keep their axis. `motion` must fit `skeleton` (asserted).
+void fit_hinge_axes(const Skeleton& skeleton, const SkeletalMotion& motion,
+                    std::vector<JointLimit>& limits);
 
 }  // namespace animkit

@@ -51,10 +51,11 @@ inline constexpr Rgba kTrailAfter{0.10f, 0.35f, 0.95f, 1.0f};
 class BvhScene {
  public:
   /// `motion` a clip of `skeleton` in metres, Y up; `limits` one per joint (an empty vector:
-  /// human_joint_limits()). When the skeleton has CMU-named legs and the clip at least two
-  /// frames, the foot-locked clip is made here once; otherwise the scene works without it
-  /// (foot_lock_problem() says why). Errors: a motion that does not fit the skeleton or has
-  /// no frame, a bad frame time, limits of the wrong count or invalid (naming the joint).
+  /// human_joint_limits() with the hinges' axes fitted to the clip, fit_hinge_axes()). When the
+  /// skeleton has CMU-named legs and the clip at least two frames, the foot-locked clip is made
+  /// here once; otherwise the scene works without it (foot_lock_problem() says why). Errors: a
+  /// motion that does not fit the skeleton or has no frame, a bad frame time, limits of the wrong
+  /// count or invalid (naming the joint).
   static Result<BvhScene> create(Skeleton skeleton, SkeletalMotion motion,
                                  std::vector<JointLimit> limits,
                                  const BvhSceneOptions& options = {});
