@@ -50,7 +50,16 @@ Result<BvhView> BvhView::create(const BvhViewOptions& options) {
     const Vec3 target = scene->clip_pose().global_positions[joint] + held.offset;
     if (auto ok = scene->hold(joint, target); !ok) return fail("--hold: " + ok.error().message);
   }
-  return BvhView(std::move(*scene), std::filesystem::path(options.path).filename().string());
+  return BvhView(std::move(*scene), std::filesystem::path(options.path).filename().string(),
+                 options.close_up);
+}
+
+Eigen::AlignedBox3d BvhView::focus_bounds() const {
+  if (!close_up_) return scene_.focus_bounds();
+  Eigen::AlignedBox3d box;
+  for (const Vec3& p : scene_.pose().global_positions) box.extend(p);
+  for (const HeldTarget& held : scene_.held()) box.extend(held.position);
+  return box;
 }
 
 void BvhView::panel() {
@@ -69,6 +78,8 @@ void BvhView::panel() {
     clock.playing = false;
     scene_.seek(frame);
   }
+
+  if (ImGui::Checkbox("Close-up (frame the character)", &close_up_)) new_view_ = true;
 
   ImGui::Separator();
   int solver = 0;
@@ -112,7 +123,7 @@ void BvhView::panel() {
     const FootLockMetrics& m = lock->metrics;
     ImGui::Text("Contacts    left %d, right %d", m.contacts[0], m.contacts[1]);
     ImGui::Text("Sliding     %.3f -> %.3f cm/frame", m.slide_before_mean_cm, m.slide_after_mean_cm);
-    ImGui::TextDisabled("Trails: captured orange, foot-locked blue.");
+    ImGui::TextDisabled("Trails: captured orange, locked dark blue (dots: locks).");
   } else {
     ImGui::TextDisabled("No foot locking: %s", scene_.foot_lock_problem().c_str());
   }

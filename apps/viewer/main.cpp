@@ -67,6 +67,8 @@ int run(int argc, char** argv) {
   app.add_flag("--free-feet", free_feet, "BVH: do not pin the ankles while joints are held");
   app.add_flag("--no-trails", no_trails, "BVH: hide the foot trails");
   app.add_option("--frame", bvh.start_frame, "BVH: frame to start on")->capture_default_str();
+  app.add_flag("--close-up", bvh.close_up,
+               "BVH: the camera frames the character (else the whole clip's path)");
   app.add_option("--select", bvh.selected, "BVH: joint whose limit is drawn (e.g. LeftKnee)");
   app.add_option("--hold", holds,
                  "BVH: hold JOINT:DX,DY,DZ, the joint at its start position plus this offset "
@@ -75,7 +77,7 @@ int run(int argc, char** argv) {
   drawing.shape = "star";
   apps::add_drawing_options(app, drawing);
   app.add_option("--solver", solver,
-                 "IK: ccd or fabrik; BVH: fabrik, ccd, dls or sdls (default dls)")
+                 "IK: ccd or fabrik; BVH: fabrik, ccd, dls or sdls (default fabrik)")
       ->capture_default_str();
   GridClothOptions& grid = options.cloth.grid;
   app.add_option("--grid", grid.cells, "Cloth: cells per side")->capture_default_str();
@@ -106,12 +108,12 @@ int run(int argc, char** argv) {
     return report_error(std::string(e.what()) + " (see animkit-viewer --help)", 2);
   }
 
-  const SceneEntry* entry = find_scene(scene);
+  const SceneEntry* scene_entry = find_scene(scene);
   if (scene.ends_with(".bvh")) {
     options.scene = SceneKind::bvh;
     bvh.path = scene;
-  } else if (entry && entry->kind != SceneKind::cloth) {
-    options.scene = entry->kind;
+  } else if (scene_entry && scene_entry->kind != SceneKind::cloth) {
+    options.scene = scene_entry->kind;
   } else if (scene == "cloth" || scene == "lab") {
     options.scene = SceneKind::cloth;
   } else {
@@ -149,7 +151,7 @@ int run(int argc, char** argv) {
   }
   if (options.scene == SceneKind::bvh) {
     const auto tree_solver = app.count("--solver") > 0 ? parse_tree_ik_solver(solver)
-                                                       : std::optional(TreeIkSolverKind::dls);
+                                                       : std::optional(BvhSceneOptions{}.solver);
     if (!tree_solver) {
       return report_error(
           "unknown solver '" + solver + "' for the BVH scene (expected fabrik, ccd, dls or sdls)",

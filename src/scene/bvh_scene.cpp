@@ -269,9 +269,12 @@ void BvhScene::describe(DrawList& out) const {
     out.lines.push_back(line);
   }
   if (options_.trails && lock_) {
+    for (int leg = 0; leg < 2; ++leg) out.add_polyline(foot_trail(leg, false), kTrailBefore, 4.0f);
     for (int leg = 0; leg < 2; ++leg) {
-      out.add_polyline(foot_trail(leg, false), kTrailBefore, 2.0f);
-      out.add_polyline(foot_trail(leg, true), kTrailAfter, 2.0f);
+      out.add_polyline(foot_trail(leg, true), kTrailAfter, 1.5f);
+      for (const FootContactSpan& span : lock_->contacts[leg].spans) {
+        out.add_point(span.lock, kTrailAfter, 7.0f);
+      }
     }
   }
   SkeletonStyle style;

@@ -228,6 +228,8 @@ TEST(BvhScene, DescribesTrailsSkeletonTargetsAndTheSelectedLimit) {
   EXPECT_EQ(count(plain, kTrailBefore), 2 * (frames - 1));
   EXPECT_EQ(count(plain, kTrailAfter), 2 * (frames - 1));
   EXPECT_EQ(count(plain, kLimitColor), 0);
+  const FootLockResult& lock = *scene.foot_lock();
+  EXPECT_EQ(plain.points.size(), lock.contacts[0].spans.size() + lock.contacts[1].spans.size());
   EXPECT_FALSE(plain.triangles.empty());  // bones and joints
 
   const int knee = scene.skeleton().find_joint("LeftKnee");
@@ -239,7 +241,7 @@ TEST(BvhScene, DescribesTrailsSkeletonTargetsAndTheSelectedLimit) {
   scene.describe(selected);
   EXPECT_EQ(count(selected, kTrailBefore), 0);
   EXPECT_EQ(count(selected, kLimitColor), 48 + 3);  // the arc, its two ends, the axis
-  ASSERT_EQ(selected.points.size(), 1u);            // the held target
+  ASSERT_EQ(selected.points.size(), 1u);  // the held target; no trails, so no contact dots
   EXPECT_LE((selected.points[0].position.cast<double>() - scene.held()[0].position).norm(), 1e-6);
 }
 

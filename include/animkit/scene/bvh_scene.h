@@ -22,7 +22,9 @@
 namespace animkit {
 
 struct BvhSceneOptions {
-  TreeIkSolverKind solver = TreeIkSolverKind::dls;
+  /// FABRIK by default: on a captured body it moves the limb and leaves the spine alone more
+  /// than DLS, whose least-norm step favours the joints farthest from the hand.
+  TreeIkSolverKind solver = TreeIkSolverKind::fabrik;
   FootLockSettings foot_lock;  ///< how the foot-locked clip is made (metres, Y up)
   bool foot_locked = false;    ///< start on the foot-locked clip (when it can be made)
   /// While targets are held, ankles without a target of their own stay where the clip (the
@@ -44,9 +46,11 @@ struct BvhSolveReadout {
   double solve_time_us = 0.0;
 };
 
-/// Colours of the foot trails: the clip as captured, and after foot locking.
+/// Colours of the foot trails: the clip as captured (drawn wide, under the other), and after
+/// foot locking (narrow, dark, with a dot where each contact pins the ankle). Where locking
+/// changed nothing the orange shows as a border of the dark line.
 inline constexpr Rgba kTrailBefore{1.00f, 0.50f, 0.05f, 1.0f};
-inline constexpr Rgba kTrailAfter{0.10f, 0.35f, 0.95f, 1.0f};
+inline constexpr Rgba kTrailAfter{0.08f, 0.12f, 0.40f, 1.0f};
 
 class BvhScene {
  public:
@@ -116,9 +120,9 @@ class BvhScene {
   /// Height of the skeleton at rest (sizes bones, joints and limits in pictures).
   double figure_height() const { return figure_height_; }
 
-  /// Floor grid, trails (orange captured, blue locked), the skeleton (bones blue, joints
-  /// yellow; the selected joint larger, with its limit), held targets (green dots joined to
-  /// their joints).
+  /// Floor grid, trails (orange captured, dark blue locked, contact locks as dots), the skeleton
+  /// (bones blue, joints yellow; the selected joint larger, with its limit), held targets (green
+  /// dots joined to their joints).
   void describe(DrawList& out) const;
   /// A box around every joint over the whole clip: what the camera frames.
   Eigen::AlignedBox3d focus_bounds() const { return bounds_; }
