@@ -159,11 +159,9 @@ bool BvhView::press(const Cursor& cursor) {
 void BvhView::drag(const Cursor& cursor) {
   if (dragged_ < 0) return;
   // The joint moves in the plane through where it was pressed, facing the camera.
-  const Vec3 facing = (cursor.camera->eye() - drag_anchor_).normalized();
-  const auto point = intersect_plane(cursor.ray, drag_anchor_, facing);
-  if (!point) return;
-  if (auto held = scene_.hold(dragged_, *point); !held) {
-    message_ = held.error().message;
+  auto held = scene_.drag_joint(dragged_, cursor.ray, cursor.camera->eye(), drag_anchor_);
+  if (!held && scene_.skeleton().parents()[dragged_] < 0) {
+    message_ = held.error().message;  // a root: stop trying; a missed ray: wait for the next
     dragged_ = -1;
   }
 }

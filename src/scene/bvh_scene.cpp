@@ -193,6 +193,14 @@ Result<void> BvhScene::hold(int joint, const Vec3& target) {
   return {};
 }
 
+Result<void> BvhScene::drag_joint(int joint, const Ray& ray, const Vec3& eye, const Vec3& anchor) {
+  const Vec3 facing = eye - anchor;
+  if (!(facing.norm() > 0.0)) return fail("the camera is at the dragged joint");
+  const auto point = intersect_plane(ray, anchor, facing.normalized());
+  if (!point) return fail("the cursor's ray misses the drag plane");
+  return hold(joint, *point);
+}
+
 void BvhScene::let_go(int joint) {
   std::erase_if(held_, [&](const HeldTarget& h) { return h.joint == joint; });
   solve();

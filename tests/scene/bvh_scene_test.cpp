@@ -213,6 +213,30 @@ TEST(BvhScene, PicksTheJointUnderTheCursor) {
   EXPECT_EQ(scene.pick_joint(camera, hips->x(), hips->y(), 900, 600, 1.0), 0);
 }
 
+TEST(BvhScene, ADragMovesTheJointUnderTheCursorInThePlaneFacingTheCamera) {
+  BvhScene scene = walk_scene();
+  scene.seek(300);
+  const OrbitCamera camera = OrbitCamera::framing(scene.focus_bounds(), 1.5, 0.9, 0.3);
+  const int elbow = scene.skeleton().find_joint("RightElbow");
+  const Vec3 anchor = scene.pose().global_positions[elbow];
+  const auto pixel = camera.project(anchor, 900, 600);
+  ASSERT_TRUE(pixel);
+  // The cursor 15 pixels right and 10 up of where the press began.
+  const Ray ray = camera.ray_through_pixel(pixel->x() + 15, pixel->y() - 10, 900, 600);
+  ASSERT_TRUE(scene.drag_joint(elbow, ray, camera.eye(), anchor));
+  ASSERT_EQ(scene.held().size(), 1u);
+  const Vec3 target = scene.held()[0].position;
+  EXPECT_NEAR((target - anchor).dot((camera.eye() - anchor).normalized()), 0.0, 1e-9);
+  const auto seen = camera.project(target, 900, 600);
+  EXPECT_NEAR(seen->x(), pixel->x() + 15, 1e-6);
+  EXPECT_NEAR(seen->y(), pixel->y() - 10, 1e-6);
+  EXPECT_LE((scene.pose().global_positions[elbow] - target).norm(), 2e-3);
+  // A ray pointing away from the plane is refused and the target stays.
+  const Ray away{anchor + (camera.eye() - anchor) * 0.5, (camera.eye() - anchor).normalized()};
+  EXPECT_FALSE(scene.drag_joint(elbow, away, camera.eye(), anchor));
+  EXPECT_EQ(scene.held()[0].position, target);
+}
+
 TEST(BvhScene, DescribesTrailsSkeletonTargetsAndTheSelectedLimit) {
   BvhScene scene = walk_scene();
   const int frames = scene.clock().frame_count();

@@ -74,6 +74,10 @@ class BvhScene {
   /// Holds `joint` at `target` (a new target, or moves the joint's one) and re-solves.
   /// Errors: a joint out of range, a root (IK never moves roots), a non-finite target.
   Result<void> hold(int joint, const Vec3& target);
+  /// A mouse drag of `joint`: its target is where `ray` (through the cursor) meets the plane
+  /// through `anchor` (the joint where the press began) that faces the camera at `eye`; then
+  /// hold(). Errors: hold()'s, or a ray that misses the plane (parallel, or pointing away).
+  Result<void> drag_joint(int joint, const Ray& ray, const Vec3& eye, const Vec3& anchor);
   /// Lets one joint (or every joint) go back to the clip.
   void let_go(int joint);
   void let_go_all();
