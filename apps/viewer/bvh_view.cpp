@@ -123,7 +123,10 @@ void BvhView::panel() {
     const FootLockMetrics& m = lock->metrics;
     ImGui::Text("Contacts    left %d, right %d", m.contacts[0], m.contacts[1]);
     ImGui::Text("Sliding     %.3f -> %.3f cm/frame", m.slide_before_mean_cm, m.slide_after_mean_cm);
-    ImGui::TextDisabled("Trails: captured orange, locked dark blue (dots: locks).");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped(
+        "Trails: ankles as captured orange, foot-locked dark blue; dots where contacts pin them.");
+    ImGui::PopStyleColor();
   } else {
     ImGui::TextDisabled("No foot locking: %s", scene_.foot_lock_problem().c_str());
   }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace animkit::viewer {
 
@@ -135,12 +136,17 @@ void ViewerApp::side_panel() {
   ImGui::SetNextWindowSize(ImVec2(static_cast<float>(kPanelWidth), static_cast<float>(height_)));
   ImGui::Begin("animkit", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  // One button per kind of scene in the registry (the cloth view has its own scene menu).
-  static constexpr std::pair<SceneKind, const char*> kKinds[] = {
-      {SceneKind::ik, "IK arm"}, {SceneKind::bvh, "Motion capture"}, {SceneKind::cloth, "Cloth"}};
-  for (const auto& [kind, label] : kKinds) {
-    if (kind != kKinds[0].first) ImGui::SameLine();
-    if (ImGui::RadioButton(label, scene_ == kind)) choose(kind);
+  // One button per kind of scene in the registry, in its order (the cloth view has its own
+  // menu of cloth scenes).
+  std::optional<SceneKind> previous;
+  for (const SceneEntry& entry : scene_entries()) {
+    if (entry.kind == previous) continue;
+    if (previous) ImGui::SameLine();
+    previous = entry.kind;
+    if (ImGui::RadioButton(std::string(scene_kind_title(entry.kind)).c_str(),
+                           scene_ == entry.kind)) {
+      choose(entry.kind);
+    }
   }
   if (!bvh_error_.empty()) {
     ImGui::TextColored(ImVec4(0.9f, 0.2f, 0.2f, 1.0f), "%s", bvh_error_.c_str());

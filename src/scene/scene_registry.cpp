@@ -23,6 +23,18 @@ std::vector<SceneEntry> make_entries() {
 
 }  // namespace
 
+std::string_view scene_kind_title(SceneKind kind) {
+  switch (kind) {
+    case SceneKind::ik:
+      return "IK arm";
+    case SceneKind::bvh:
+      return "Motion capture";
+    case SceneKind::cloth:
+      return "Cloth";
+  }
+  return "?";
+}
+
 std::span<const SceneEntry> scene_entries() {
   static const std::vector<SceneEntry> entries = make_entries();
   return entries;

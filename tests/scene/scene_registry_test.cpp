@@ -26,6 +26,10 @@ TEST(SceneRegistry, ListsTheArmTheClipAndEveryClothSceneOnce) {
     EXPECT_EQ(entry->kind, SceneKind::cloth);
   }
   EXPECT_EQ(scene_entries().size(), cloth_scenes().size() + 2);
+  // Entries of one kind are together, so a menu of kinds can take the first of each.
+  EXPECT_EQ(scene_entries()[0].kind, SceneKind::ik);
+  EXPECT_EQ(scene_entries()[1].kind, SceneKind::bvh);
+  EXPECT_EQ(scene_kind_title(SceneKind::bvh), "Motion capture");
 }
 
 TEST(SceneRegistry, ClothMeansTheLabsClothAndUnknownNamesAreNull) {

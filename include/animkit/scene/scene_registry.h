@@ -22,6 +22,9 @@ struct SceneEntry {
   std::string_view summary;  ///< one line for --help and menus
 };
 
+/// The kind's title in menus: "IK arm", "Motion capture", "Cloth".
+std::string_view scene_kind_title(SceneKind kind);
+
 /// Every scene: "ik", "bvh", then the cloth scenes in cloth_scenes() order ("lab" first).
 std::span<const SceneEntry> scene_entries();
 
