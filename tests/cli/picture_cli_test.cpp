@@ -220,6 +220,12 @@ TEST(Viewer, RefusesAHeldJointTheClipDoesNotHave) {
                          "'LeftWrist:1,2'"),
             std::string::npos)
       << bad.err;
+  const auto solver = run_command(kViewer + " --scene bvh --solver newton --frames 1");
+  EXPECT_EQ(solver.exit_code, 2);
+  EXPECT_NE(solver.err.find("unknown solver 'newton' for the BVH scene (expected fabrik, ccd, "
+                            "dls or sdls)"),
+            std::string::npos)
+      << solver.err;
 }
 
 // The collider's violet (palette::collider), lit: bluer than red, red at least green, unlike
