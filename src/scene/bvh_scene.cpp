@@ -6,6 +6,9 @@
 #include <limits>
 #include <string>
 
+#include "animkit/kinematics/ccd_tree.h"
+#include "animkit/kinematics/dls_tree.h"
+#include "animkit/kinematics/fabrik_tree.h"
 #include "animkit/kinematics/human_limits.h"
 #include "animkit/scene/skeleton_drawing.h"
 
@@ -50,6 +53,17 @@ Result<TreeIkResult> solve_with(TreeIkSolverKind kind, const Skeleton& skeleton,
 }
 
 }  // namespace
+
+struct BvhScene::SolverWorkspaces {
+  FabrikTreeWorkspace fabrik;
+  CcdTreeWorkspace ccd;
+  DlsWorkspace dls;
+};
+
+BvhScene::BvhScene() : workspaces_(std::make_unique<SolverWorkspaces>()) {}
+BvhScene::BvhScene(BvhScene&&) noexcept = default;
+BvhScene& BvhScene::operator=(BvhScene&&) noexcept = default;
+BvhScene::~BvhScene() = default;
 
 Result<BvhScene> BvhScene::create(Skeleton skeleton, SkeletalMotion motion,
                                   std::vector<JointLimit> limits, const BvhSceneOptions& options) {
@@ -159,7 +173,8 @@ void BvhScene::solve() {
   }
   const TreeIkProblem problem{effectors_, limits_};
   const auto start = std::chrono::steady_clock::now();
-  const auto result = solve_with(options_.solver, skeleton_, problem, fabrik_, ccd_, dls_, pose_);
+  const auto result = solve_with(options_.solver, skeleton_, problem, workspaces_->fabrik,
+                                 workspaces_->ccd, workspaces_->dls, pose_);
   const auto stop = std::chrono::steady_clock::now();
   if (!result) {
     // Inputs are checked by hold(); a failure here leaves the clip's pose on screen.

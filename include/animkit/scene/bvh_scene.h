@@ -5,15 +5,14 @@
 // swapped for its foot-locked version, computed once; and the ankles' trails before and
 // after locking. The viewer shows this class; it holds the state and every algorithm.
 #include <array>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "animkit/kinematics/ccd_tree.h"
-#include "animkit/kinematics/dls_tree.h"
-#include "animkit/kinematics/fabrik_tree.h"
 #include "animkit/kinematics/foot_lock.h"
+#include "animkit/kinematics/tree_ik.h"
 #include "animkit/kinematics/tree_ik_solver.h"
 #include "animkit/scene/draw_list.h"
 #include "animkit/scene/orbit_camera.h"
@@ -63,6 +62,9 @@ class BvhScene {
   static Result<BvhScene> create(Skeleton skeleton, SkeletalMotion motion,
                                  std::vector<JointLimit> limits,
                                  const BvhSceneOptions& options = {});
+  BvhScene(BvhScene&&) noexcept;
+  BvhScene& operator=(BvhScene&&) noexcept;
+  ~BvhScene();
 
   /// Moves the clock on (when playing) and poses the frame it shows.
   void advance(double seconds);
@@ -132,7 +134,11 @@ class BvhScene {
   Eigen::AlignedBox3d focus_bounds() const { return bounds_; }
 
  private:
-  BvhScene() = default;
+  // The tree solvers' workspaces, on the heap: a never-used Eigen decomposition in the DLS
+  // workspace must not be moved with the scene (moving it reads its uninitialized status).
+  struct SolverWorkspaces;
+
+  BvhScene();
   void pose_frame();
   void solve();
 
@@ -149,9 +155,7 @@ class BvhScene {
   std::vector<HeldTarget> held_;
   SkeletonPose pose_, clip_pose_;
   std::vector<Effector> effectors_;
-  FabrikTreeWorkspace fabrik_;
-  CcdTreeWorkspace ccd_;
-  DlsWorkspace dls_;
+  std::unique_ptr<SolverWorkspaces> workspaces_;
   std::optional<BvhSolveReadout> last_;
   double floor_ = 0.0, figure_height_ = 1.0;
   Eigen::AlignedBox3d bounds_;
