@@ -77,7 +77,7 @@ int run(int argc, char** argv) {
   drawing.shape = "star";
   apps::add_drawing_options(app, drawing);
   app.add_option("--solver", solver,
-                 "IK: ccd or fabrik; BVH: fabrik, ccd, dls or sdls (default fabrik)")
+                 "IK: ccd or fabrik; BVH: ccd, fabrik, dls or sdls (default ccd)")
       ->capture_default_str();
   GridClothOptions& grid = options.cloth.grid;
   app.add_option("--grid", grid.cells, "Cloth: cells per side")->capture_default_str();

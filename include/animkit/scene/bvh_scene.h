@@ -21,9 +21,11 @@
 namespace animkit {
 
 struct BvhSceneOptions {
-  /// FABRIK by default: on a captured body it moves the limb and leaves the spine alone more
-  /// than DLS, whose least-norm step favours the joints farthest from the hand.
-  TreeIkSolverKind solver = TreeIkSolverKind::fabrik;
+  /// CCD by default: on a captured body reaching with a hand it turns the arm and leaves the
+  /// spine nearly as captured, where DLS bends every spine joint (its least-norm step favours
+  /// joints far from the hand) and FABRIK twists the lower back and chest against each other
+  /// (the README has the measured angles).
+  TreeIkSolverKind solver = TreeIkSolverKind::ccd;
   FootLockSettings foot_lock;  ///< how the foot-locked clip is made (metres, Y up)
   bool foot_locked = false;    ///< start on the foot-locked clip (when it can be made)
   /// While targets are held, ankles without a target of their own stay where the clip (the
