@@ -16,8 +16,9 @@ bool name_has(const std::string& name, std::string_view word) {
   return lower.find(word) != std::string::npos;
 }
 
-// The joint's bone in its own frame: toward its first child that is not on top of it.
-Vec3 bone_direction(const Skeleton& skeleton, int joint) {
+}  // namespace
+
+Vec3 joint_bone_direction(const Skeleton& skeleton, int joint) {
   for (int k = skeleton.child_begin()[joint]; k < skeleton.child_begin()[joint + 1]; ++k) {
     const Vec3& offset = skeleton.rest_offsets()[skeleton.child_list()[k]];
     if (offset.norm() > 1e-9) return offset.normalized();
@@ -25,14 +26,12 @@ Vec3 bone_direction(const Skeleton& skeleton, int joint) {
   return Vec3::UnitY();
 }
 
-}  // namespace
-
 std::vector<JointLimit> human_joint_limits(const Skeleton& skeleton) {
   std::vector<JointLimit> limits(skeleton.joint_count(), FreeJoint{});
   for (int j = 0; j < skeleton.joint_count(); ++j) {
     if (skeleton.parents()[j] < 0) continue;
     const std::string& name = skeleton.names()[j];
-    const Vec3 bone = bone_direction(skeleton, j);
+    const Vec3 bone = joint_bone_direction(skeleton, j);
     const bool knee = name_has(name, "knee"), elbow = name_has(name, "elbow");
     if (knee || elbow) {
       // A small turn by t about a = bone x z moves the bone's end by t (a x bone) = t z (for a

@@ -29,14 +29,6 @@ void describe_skeleton(DrawList& out, const Skeleton& skeleton, const SkeletonPo
   }
 }
 
-Vec3 joint_bone_direction(const Skeleton& skeleton, int joint) {
-  for (int k = skeleton.child_begin()[joint]; k < skeleton.child_begin()[joint + 1]; ++k) {
-    const Vec3& offset = skeleton.rest_offsets()[skeleton.child_list()[k]];
-    if (offset.norm() > 1e-9) return offset.normalized();
-  }
-  return Vec3::UnitY();
-}
-
 std::vector<Vec3> limit_outline(const JointLimit& limit, const Vec3& bone, int samples) {
   std::vector<Vec3> rim;
   if (const auto* hinge = std::get_if<HingeLimit>(&limit)) {

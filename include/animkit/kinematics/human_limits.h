@@ -20,6 +20,10 @@ inline constexpr double kHumanOverextension = 0.087266462599716474;
 inline constexpr double kHumanBallSwing = 2.0943951023931957;
 inline constexpr double kHumanBallTwist = 1.5707963267948966;
 
+/// The joint's bone direction in its own frame (unit): toward its first child that is not on
+/// top of it, else +y (a leaf). What a ball limit's twist axis follows.
+Vec3 joint_bone_direction(const Skeleton& skeleton, int joint);
+
 /// One limit per joint: roots free; a joint whose name contains "knee" (any case) a hinge
 /// about a = bone x +z (the body faces +z) flexing the bone backwards (-z: angles in
 /// [-kHumanHingeFlexion, kHumanOverextension]), a joint named "elbow" the same hinge flexing

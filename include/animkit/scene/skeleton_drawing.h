@@ -4,6 +4,7 @@
 // scene and whatever else draws a character.
 #include <vector>
 
+#include "animkit/kinematics/human_limits.h"  // joint_bone_direction
 #include "animkit/kinematics/joint_limits.h"
 #include "animkit/kinematics/skeleton.h"
 #include "animkit/scene/draw_list.h"
@@ -21,10 +22,6 @@ struct SkeletonStyle {
 /// (none on a joint sitting on its parent, which would hide it). `pose` has FK run.
 void describe_skeleton(DrawList& out, const Skeleton& skeleton, const SkeletonPose& pose,
                        const SkeletonStyle& style = {});
-
-/// The joint's bone direction in its own frame: toward its first child not on top of it, else
-/// +y (a leaf).
-Vec3 joint_bone_direction(const Skeleton& skeleton, int joint);
 
 inline constexpr Rgba kLimitColor{0.95f, 0.35f, 0.75f, 1.0f};  ///< the allowed directions
 inline constexpr Rgba kBoneNowColor{1.0f, 1.0f, 1.0f, 1.0f};   ///< where the bone points now
