@@ -10,8 +10,10 @@
 #include "animkit/io/atomic_write.h"
 #include "animkit/io/drawing_source.h"
 #include "animkit/io/ik_report.h"
+#include "animkit/io/joint_limits_file.h"
 #include "animkit/kinematics/chain.h"
 #include "animkit/kinematics/drawing_session.h"
+#include "animkit/kinematics/skeleton_drawing_session.h"
 #include "cli_errors.h"
 #include "drawing_args.h"
 #include "ik_pictures.h"
@@ -31,6 +33,7 @@ struct IkArgs {
   bool cold_start = false;
   std::string fabrik_rotations = "rest";
   std::string target;
+  std::string limits;  ///< a joint limits file: the arm runs as a skeleton through the tree solvers
   std::string out;
   PictureArgs pictures;
   std::optional<int> picture_frame;
@@ -48,10 +51,10 @@ void print_drawing(const PreparedDrawing& d, int pen_up) {
   std::printf("\n");
 }
 
-void print_single_target(const Chain& chain, IkSolverKind solver, const DrawingRun& run) {
+void print_single_target(std::string_view solver, const DrawingRun& run) {
   const DrawingFrame& frame = run.frames.front();
   const IkResult& result = frame.ik;
-  std::printf("solver       %s\n", std::string(to_string(solver)).c_str());
+  std::printf("solver       %s\n", std::string(solver).c_str());
   std::printf("target       %s\n", to_string(frame.target).c_str());
   std::printf("end effector %s\n", to_string(frame.end_effector).c_str());
   std::printf("iterations   %d\n", result.iterations);
@@ -59,15 +62,51 @@ void print_single_target(const Chain& chain, IkSolverKind solver, const DrawingR
   std::printf("converged    %s\n", result.converged ? "yes" : "no");
   std::printf("reachable    %s%s\n", result.reachable ? "yes" : "no",
               result.reachable ? "" : " (the arm points straight at the target)");
-  for (int i = 0; i < chain.joint_count(); ++i) {
-    std::printf("joint %d      %s\n", i, to_string(run.final_pose.global_positions[i]).c_str());
+  for (std::size_t i = 0; i < run.final_pose.global_positions.size(); ++i) {
+    std::printf("joint %zu      %s\n", i, to_string(run.final_pose.global_positions[i]).c_str());
   }
 }
 
-int run(const IkArgs& args) {
-  const auto solver = parse_ik_solver(args.solver);
+// With --limits: the lab's arm as a one-branch skeleton (joints joint0..joint4), its limits
+// from the file, and the tree solver named by --solver.
+struct LimitedArm {
+  Skeleton skeleton;
+  std::vector<JointLimit> limits;
+  TreeIkSolverKind solver;
+};
+
+Result<LimitedArm> limited_arm(const IkArgs& args) {
+  const auto solver = parse_tree_ik_solver(args.solver);
   if (!solver) {
-    return report_error("unknown solver " + quote_input(args.solver) + " (expected ccd or fabrik)");
+    return fail("unknown solver " + quote_input(args.solver) +
+                " (expected fabrik, ccd, dls or sdls with --limits)");
+  }
+  auto skeleton = build_skeleton(skeleton_desc_from_chain(lab_arm()));
+  if (!skeleton) return fail(skeleton.error().message);
+  const auto set = read_joint_limits_file(args.limits);
+  if (!set) return fail(set.error().message);
+  auto limits = bind_joint_limits(*set, skeleton->names());
+  if (!limits) {
+    return fail(args.limits + ": " + limits.error().message +
+                " (the lab arm's joints are joint0 to joint" +
+                std::to_string(skeleton->joint_count() - 1) + ")");
+  }
+  return LimitedArm{std::move(*skeleton), std::move(*limits), *solver};
+}
+
+int run(const IkArgs& args) {
+  std::optional<LimitedArm> arm;
+  std::optional<IkSolverKind> solver = IkSolverKind::ccd;
+  if (!args.limits.empty()) {
+    auto limited = limited_arm(args);
+    if (!limited) return report_error(limited.error().message);
+    arm = std::move(*limited);
+  } else {
+    solver = parse_ik_solver(args.solver);
+    if (!solver) {
+      return report_error("unknown solver " + quote_input(args.solver) +
+                          " (expected ccd or fabrik)");
+    }
   }
 
   const auto fabrik_rotations = parse_fabrik_rotations(args.fabrik_rotations);
@@ -90,6 +129,7 @@ int run(const IkArgs& args) {
   // One target is a one-frame drawing from the rest pose: same solve, same reports.
   Trajectory trajectory;
   IkRunLabel label{"target", args.solver, std::nullopt};
+  if (arm) label.limits = args.limits;
   std::optional<PreparedDrawing> drawing;
   if (args.target.empty()) {
     const auto request = apps::drawing_request(args.drawing);
@@ -134,7 +174,13 @@ int run(const IkArgs& args) {
   picture_args.video = video;
   auto pictures = PictureOutput::open(picture_args, output->has_folder(), kIkVideoFps);
   if (!pictures) return report_error(pictures.error().message);
-  const auto run = run_drawing(*chain, trajectory.targets, options, trajectory.pen_down);
+  const auto run =
+      arm ? run_skeleton_drawing(
+                arm->skeleton, arm->skeleton.joint_count() - 1, arm->limits, trajectory.targets,
+                SkeletonDrawingOptions{arm->solver, options.ik.max_iterations, options.ik.tolerance,
+                                       options.laps, options.warm_start},
+                trajectory.pen_down)
+          : run_drawing(*chain, trajectory.targets, options, trajectory.pen_down);
   if (!run) return report_error(run.error().message);
   if (args.picture_frame && *args.picture_frame >= static_cast<int>(run->frames.size())) {
     return report_error("--picture-frame " + std::to_string(*args.picture_frame) +
@@ -161,7 +207,7 @@ int run(const IkArgs& args) {
                   summary.unreachable_targets);
     }
   } else {
-    print_single_target(*chain, *solver, *run);
+    print_single_target(arm ? to_string(arm->solver) : to_string(*solver), *run);
   }
   if (!args.out.empty()) {
     std::printf("wrote metrics.json, path.csv, drawing.svg%s to %s\n",
@@ -180,7 +226,10 @@ std::function<int()> add_ik_command(CLI::App& app) {
       "The lab's arm draws a shape with inverse kinematics, one target per frame "
       "(warm-started from the previous frame), and reports what each solve did.");
   CLI::Option* shape = apps::add_drawing_options(*ik, args->drawing);
-  ik->add_option("--solver", args->solver, "IK solver: ccd or fabrik")->capture_default_str();
+  ik->add_option("--solver", args->solver,
+                 "IK solver: ccd or fabrik (the lab's chain solvers); with --limits a tree solver: "
+                 "fabrik, ccd, dls or sdls")
+      ->capture_default_str();
   ik->add_option("--max-iterations", args->max_iterations, "Iteration cap per target (>= 1)")
       ->capture_default_str();
   ik->add_option("--tolerance", args->tolerance,
@@ -192,10 +241,16 @@ std::function<int()> add_ik_command(CLI::App& app) {
   CLI::Option* cold_start =
       ik->add_flag("--cold-start", args->cold_start,
                    "Solve every target from the rest pose instead of the previous frame's pose");
-  ik->add_option("--fabrik-rotations", args->fabrik_rotations,
-                 "How FABRIK recovers joint rotations: rest (the lab's, shortest arc from the rest "
-                 "bone) or previous (smallest change from the last frame, no twist jumps)")
-      ->capture_default_str();
+  CLI::Option* fabrik_rotations =
+      ik->add_option(
+            "--fabrik-rotations", args->fabrik_rotations,
+            "How FABRIK recovers joint rotations: rest (the lab's, shortest arc from the rest "
+            "bone) or previous (smallest change from the last frame, no twist jumps)")
+          ->capture_default_str();
+  ik->add_option("--limits", args->limits,
+                 "Joint limits JSON (joint0..joint4, degrees; e.g. data/limits/lab_arm.json): the "
+                 "arm runs as a one-branch skeleton through the tree solvers with these limits")
+      ->excludes(fabrik_rotations);
   ik->add_option("--target", args->target,
                  "Solve one target X,Y,Z from the rest pose and print the result, instead of "
                  "drawing a shape (--out then writes its one-frame reports)")

@@ -13,6 +13,7 @@
 #include "demo_command.h"
 #include "footlock_command.h"
 #include "ik_command.h"
+#include "reach_command.h"
 
 namespace {
 
@@ -28,7 +29,8 @@ int check_standard_output(int code) {
 
 int run(CLI::App& app, int argc, char** argv) {
   app.description(
-      "animkit: inverse kinematics (CCD, FABRIK), foot locking of BVH walks and mass-spring cloth, "
+      "animkit: inverse kinematics (CCD, FABRIK), foot locking and hand reaching of BVH "
+      "characters, mass-spring cloth, "
       "headless.\n"
       "Run `animkit <command> --help` for a command's options.");
   app.require_subcommand(1);
@@ -38,6 +40,7 @@ int run(CLI::App& app, int argc, char** argv) {
   const auto run_cloth_study = animkit::cli::add_cloth_study_command(app);
   const auto run_demo = animkit::cli::add_demo_command(app);
   const auto run_footlock = animkit::cli::add_footlock_command(app);
+  const auto run_reach = animkit::cli::add_reach_command(app);
 
   try {
     app.parse(argc, argv);
@@ -55,6 +58,7 @@ int run(CLI::App& app, int argc, char** argv) {
     if (app.got_subcommand("cloth")) return run_cloth();
     if (app.got_subcommand("cloth-study")) return run_cloth_study();
     if (app.got_subcommand("footlock")) return run_footlock();
+    if (app.got_subcommand("reach")) return run_reach();
     return run_demo();
   } catch (const std::exception& e) {  // e.g. out of memory: still one line, never a crash
     return animkit::cli::report_error(e.what());

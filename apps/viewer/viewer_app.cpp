@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace animkit::viewer {
 
@@ -12,8 +13,14 @@ constexpr double kOrbitRadiansPerPx = 0.008;
 constexpr double kClickSlopPx = 3.0;  // a press that moves less is a click
 }  // namespace
 
-ViewerApp::ViewerApp(Renderer renderer, IkView ik, ClothView cloth, SceneKind scene)
-    : renderer_(std::move(renderer)), ik_(std::move(ik)), cloth_(std::move(cloth)), scene_(scene) {}
+ViewerApp::ViewerApp(Renderer renderer, IkView ik, ClothView cloth, std::optional<BvhView> bvh,
+                     BvhViewOptions bvh_options, SceneKind scene)
+    : renderer_(std::move(renderer)),
+      ik_(std::move(ik)),
+      cloth_(std::move(cloth)),
+      bvh_(std::move(bvh)),
+      bvh_options_(std::move(bvh_options)),
+      scene_(scene) {}
 
 Result<ViewerApp> ViewerApp::create(const ViewerOptions& options) {
   auto ik = IkView::create(options.ik);
@@ -27,14 +34,44 @@ Result<ViewerApp> ViewerApp::create(const ViewerOptions& options) {
     ik->set_playing(false);
     cloth->set_playing(false);
   }
+  std::optional<BvhView> bvh;
+  if (options.scene == SceneKind::bvh) {
+    auto opened = BvhView::create(options.bvh);
+    if (!opened) return fail(opened.error().message);
+    if (options.paused) opened->scene().clock().playing = false;
+    bvh = std::move(*opened);
+  }
   auto renderer = Renderer::create();
   if (!renderer) return fail(renderer.error().message);
-  return ViewerApp(std::move(*renderer), std::move(*ik), std::move(*cloth), options.scene);
+  return ViewerApp(std::move(*renderer), std::move(*ik), std::move(*cloth), std::move(bvh),
+                   options.bvh, options.scene);
 }
 
 SceneView& ViewerApp::current() {
-  if (scene_ == SceneKind::ik) return ik_;
-  return cloth_;
+  switch (scene_) {
+    case SceneKind::ik:
+      return ik_;
+    case SceneKind::bvh:
+      return *bvh_;  // choose() opens it before switching
+    case SceneKind::cloth:
+      return cloth_;
+  }
+  return ik_;
+}
+
+void ViewerApp::choose(SceneKind scene) {
+  if (scene == scene_) return;
+  if (scene == SceneKind::bvh && !bvh_) {
+    auto opened = BvhView::create(bvh_options_);
+    if (!opened) {
+      bvh_error_ = opened.error().message;
+      return;
+    }
+    bvh_ = std::move(*opened);
+    bvh_error_.clear();
+  }
+  scene_ = scene;
+  reset_camera();
 }
 
 void ViewerApp::reset_camera() {
@@ -99,14 +136,20 @@ void ViewerApp::side_panel() {
   ImGui::SetNextWindowSize(ImVec2(static_cast<float>(kPanelWidth), static_cast<float>(height_)));
   ImGui::Begin("animkit", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  int scene = scene_ == SceneKind::ik ? 0 : 1;
-  ImGui::RadioButton("Inverse Kinematics", &scene, 0);
-  ImGui::SameLine();
-  ImGui::RadioButton("Mass-Spring Cloth", &scene, 1);
-  const SceneKind chosen = scene == 0 ? SceneKind::ik : SceneKind::cloth;
-  if (chosen != scene_) {
-    scene_ = chosen;
-    reset_camera();
+  // One button per kind of scene in the registry, in its order (the cloth view has its own
+  // menu of cloth scenes).
+  std::optional<SceneKind> previous;
+  for (const SceneEntry& entry : scene_entries()) {
+    if (entry.kind == previous) continue;
+    if (previous) ImGui::SameLine();
+    previous = entry.kind;
+    if (ImGui::RadioButton(std::string(scene_kind_title(entry.kind)).c_str(),
+                           scene_ == entry.kind)) {
+      choose(entry.kind);
+    }
+  }
+  if (!bvh_error_.empty()) {
+    ImGui::TextColored(ImVec4(0.9f, 0.2f, 0.2f, 1.0f), "%s", bvh_error_.c_str());
   }
   ImGui::Separator();
   ImGui::PushItemWidth(-130.0f);

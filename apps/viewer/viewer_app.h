@@ -1,5 +1,5 @@
 #pragma once
-// The viewer's frame, shared by the window and the headless capture: both scenes, the orbit
+// The viewer's frame, shared by the window and the headless capture: the scenes, the orbit
 // camera, the side panel and the mouse. Hosts own the OpenGL context and Dear ImGui's
 // platform side; they call update() between ImGui::NewFrame() and ImGui::Render(), then
 // render() before drawing ImGui's draw data.
@@ -7,16 +7,17 @@
 #include <optional>
 
 #include "animkit/render/renderer.h"
+#include "animkit/scene/scene_registry.h"
+#include "bvh_view.h"
 #include "cloth_view.h"
 #include "ik_view.h"
 
 namespace animkit::viewer {
 
-enum class SceneKind { ik, cloth };
-
 struct ViewerOptions {
   SceneKind scene = SceneKind::ik;
   IkViewOptions ik;
+  BvhViewOptions bvh;       ///< opened at the start for --scene bvh, else when first chosen
   ClothSceneOptions cloth;  ///< the lab's cloth, unless cloth_world is given
   /// A cloth scene to open instead (--scene NAME|FILE.json) and its name for the menu.
   std::optional<NamedClothWorld> cloth_world;
@@ -27,8 +28,8 @@ struct ViewerOptions {
 
 class ViewerApp {
  public:
-  /// Builds both scenes and the renderer (an OpenGL context must be current). Errors: bad
-  /// scene options, a renderer that cannot start.
+  /// Builds the scenes (the BVH one only when it is the first shown) and the renderer (an OpenGL
+  /// context must be current). Errors: bad scene options, a renderer that cannot start.
   static Result<ViewerApp> create(const ViewerOptions& options);
 
   /// Reads the mouse and keys from ImGui's IO, advances the current scene one frame and lays
@@ -42,8 +43,11 @@ class ViewerApp {
   void reset_camera();
 
  private:
-  ViewerApp(Renderer renderer, IkView ik, ClothView cloth, SceneKind scene);
+  ViewerApp(Renderer renderer, IkView ik, ClothView cloth, std::optional<BvhView> bvh,
+            BvhViewOptions bvh_options, SceneKind scene);
   SceneView& current();
+  // Switches to `scene`; the BVH scene is read the first time (an error keeps the current one).
+  void choose(SceneKind scene);
   Cursor cursor_at(double x, double y) const;
   void handle_mouse();
   void side_panel();
@@ -51,6 +55,9 @@ class ViewerApp {
   Renderer renderer_;
   IkView ik_;
   ClothView cloth_;
+  std::optional<BvhView> bvh_;
+  BvhViewOptions bvh_options_;
+  std::string bvh_error_;  // why the BVH scene could not be opened
   SceneKind scene_;
   OrbitCamera camera_;
   bool camera_placed_ = false;

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "animkit/kinematics/euler_angles.h"
+#include "bvh_text.h"
 
 namespace animkit {
 
@@ -78,8 +79,8 @@ std::optional<Error> BvhClip::validate() const {
                  " joints"};
   }
   for (std::size_t i = 0; i < n; ++i) {
-    const std::string& name = skeleton.names[i];
-    if (name.find_first_of(" \t\r\n\v\f{}#") != std::string::npos) {
+    const std::string name = bvh_detail::shown_name(skeleton.names[i]);
+    if (skeleton.names[i].find_first_of(bvh_detail::kNotInNames) != std::string::npos) {
       return Error{"joint " + std::to_string(i) + " name '" + name +
                    "' has whitespace, a brace or '#', which a BVH file cannot hold"};
     }
@@ -96,7 +97,8 @@ std::optional<Error> BvhClip::validate() const {
     }
     const int p = skeleton.parents[i];
     if (p >= 0 && end_sites[p]) {
-      return Error{"joint " + name + " is a child of End Site " + skeleton.names[p]};
+      return Error{"joint " + name + " is a child of End Site " +
+                   bvh_detail::shown_name(skeleton.names[p])};
     }
   }
   if (motion.cols() != channel_count()) {

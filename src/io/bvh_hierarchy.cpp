@@ -89,6 +89,10 @@ class HierarchyReader {
           return at(token.line, std::string(token.text) + " without a name");
         }
         const Token& name = tokens_[pos++];
+        if (name.text.find_first_of(kNotInNames) != std::string_view::npos) {
+          return at(name.line, "joint name " + quote_input(name.text) +
+                                   " holds a brace or '#', which a BVH name cannot");
+        }
         const auto [it, inserted] = name_lines.emplace(name.text, name.line);
         if (!inserted) {
           return at(name.line, "a second joint is named " + quote_input(name.text) +

@@ -146,7 +146,8 @@ class BvhReader {
     for (int j = 0; j < clip_.joint_count(); ++j) {
       const auto& list = clip_.channels[j];
       if (column < static_cast<int>(list.size())) {
-        return std::string(bvh_channel_name(list[column])) + " of " + clip_.skeleton.names[j];
+        return std::string(bvh_channel_name(list[column])) + " of " +
+               shown_name(clip_.skeleton.names[j]);
       }
       column -= static_cast<int>(list.size());
     }

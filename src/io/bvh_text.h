@@ -17,6 +17,10 @@ namespace animkit::bvh_detail {
 
 inline constexpr std::string_view kSpaces = kTokenSpaces;
 
+/// What a joint name cannot hold and still be written and read back as one name: whitespace,
+/// braces and '#'.
+inline constexpr std::string_view kNotInNames = " \t\r\n\v\f{}#";
+
 /// A line that is neither blank nor a '#' comment.
 struct Line {
   std::string_view text;
@@ -56,9 +60,10 @@ inline bool parse_channel(std::string_view token, BvhChannel& channel) {
   return false;
 }
 
-/// A joint name as messages show it: cut after 64 bytes, so an error stays one short line.
+/// A joint name as messages show it: bytes that are not printable UTF-8 escaped, cut after 32
+/// characters, so a message holding a name and a quoted value stays one short line.
 inline std::string shown_name(std::string_view name) {
-  return name.size() <= 64 ? std::string(name) : std::string(name.substr(0, 64)) + "...";
+  return sanitize_message(name, 32);
 }
 
 /// "NAME: line N: message", made safe to print (control bytes escaped, length capped).

@@ -31,6 +31,11 @@ std::string ik_metrics_json(const IkRunLabel& label, const DrawingOptions& optio
         {"laps", options.laps},
         {"warm_start", options.warm_start}}},
   };
+  if (label.limits) {
+    // The arm ran as a skeleton through the tree solvers: the chain's FABRIK option is not used.
+    j["options"].erase("fabrik_rotations");
+    j["limits"] = *label.limits;
+  }
   if (label.drawing) {
     const auto spacing = [](const SpacingStats& st) {
       return nlohmann::ordered_json{

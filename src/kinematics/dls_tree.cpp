@@ -95,7 +95,9 @@ void restrict_to_hinge(const TreeIkProblem& problem, const SkeletonPose& pose, i
   const auto* hinge = limit != nullptr ? std::get_if<HingeLimit>(limit) : nullptr;
   if (hinge == nullptr) return;
   const Vec3 a = (pose.global_rotations[static_cast<std::size_t>(j)] * hinge->axis).normalized();
-  ws.jacobian.middleCols<3>(3 * j) = ws.jacobian.middleCols<3>(3 * j) * (a * a.transpose());
+  // Row by row with fixed-size rows: a product of the whole block would allocate a temporary.
+  auto cols = ws.jacobian.middleCols<3>(3 * j);
+  for (Eigen::Index r = 0; r < cols.rows(); ++r) cols.row(r) = cols.row(r).dot(a) * a.transpose();
 }
 
 // The world rotation of joint j's parent; the identity above a root (its local frame is the
@@ -121,7 +123,9 @@ void block_axis(const SkeletonPose& pose, const Skeleton& skeleton, int j, unsig
   if (n < 1e-9) return;  // already out of the columns
   r /= n;
   auto cols = ws.jacobian.middleCols<3>(3 * j);
-  cols -= (cols * r) * r.transpose();
+  for (Eigen::Index row = 0; row < cols.rows(); ++row) {
+    cols.row(row) -= cols.row(row).dot(r) * r.transpose();
+  }
 }
 
 // Buss & Kim 2005's ClampMaxAbs: scales w so that its largest |component| is at most d.

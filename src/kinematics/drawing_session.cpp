@@ -38,25 +38,33 @@ std::optional<Error> DrawingOptions::validate() const {
   return ik.validate();
 }
 
-Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets,
-                               const DrawingOptions& options, std::span<const char> pen_down) {
-  if (auto error = options.validate()) return fail(error->message);
-  if (targets.empty()) return fail("the trajectory has no targets");
+std::optional<Error> validate_drawing_targets(std::span<const Vec3> targets, int laps,
+                                              std::span<const char> pen_down) {
+  if (targets.empty()) return Error{"the trajectory has no targets"};
   if (!pen_down.empty() && pen_down.size() != targets.size()) {
-    return fail("the pen list has " + std::to_string(pen_down.size()) + " flags for " +
-                std::to_string(targets.size()) + " targets");
+    return Error{"the pen list has " + std::to_string(pen_down.size()) + " flags for " +
+                 std::to_string(targets.size()) + " targets"};
   }
-  const long long frames = static_cast<long long>(targets.size()) * options.laps;
+  const long long frames = static_cast<long long>(targets.size()) * laps;
   if (frames > kMaxDrawingFrames) {
-    return fail(std::to_string(options.laps) + " laps of " + std::to_string(targets.size()) +
-                " targets make " + std::to_string(frames) + " frames, more than the limit of " +
-                std::to_string(kMaxDrawingFrames));
+    return Error{std::to_string(laps) + " laps of " + std::to_string(targets.size()) +
+                 " targets make " + std::to_string(frames) + " frames, more than the limit of " +
+                 std::to_string(kMaxDrawingFrames)};
   }
   for (std::size_t i = 0; i < targets.size(); ++i) {
     if (!is_finite(targets[i])) {
-      return fail("target " + std::to_string(i) + " has a non-finite coordinate " +
-                  to_string(targets[i]));
+      return Error{"target " + std::to_string(i) + " has a non-finite coordinate " +
+                   to_string(targets[i])};
     }
+  }
+  return std::nullopt;
+}
+
+Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets,
+                               const DrawingOptions& options, std::span<const char> pen_down) {
+  if (auto error = options.validate()) return fail(error->message);
+  if (auto error = validate_drawing_targets(targets, options.laps, pen_down)) {
+    return fail(error->message);
   }
 
   const Pose rest = rest_pose(chain);

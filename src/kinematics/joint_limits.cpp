@@ -26,15 +26,18 @@ std::optional<Error> check_axis(const char* what, const Vec3& axis) {
   return std::nullopt;
 }
 
+// `what` stays a C string until there is an error: solvers validate limits on every call and
+// must not allocate then.
 std::optional<Error> check_range(const char* what, double lo, double hi) {
-  const std::string name(what);
-  if (!std::isfinite(lo) || !std::isfinite(hi)) return Error{name + " has a non-finite angle"};
+  if (!std::isfinite(lo) || !std::isfinite(hi)) {
+    return Error{std::string(what) + " has a non-finite angle"};
+  }
   if (lo < -kPi || hi > kPi) {
-    return Error{name + " [" + format_number(lo) + ", " + format_number(hi) +
+    return Error{std::string(what) + " [" + format_number(lo) + ", " + format_number(hi) +
                  "] rad is not within [-pi, pi]"};
   }
   if (lo > hi) {
-    return Error{name + " minimum " + format_number(lo) + " rad is above its maximum " +
+    return Error{std::string(what) + " minimum " + format_number(lo) + " rad is above its maximum " +
                  format_number(hi) + " rad"};
   }
   return std::nullopt;

@@ -184,6 +184,50 @@ TEST(Viewer, CapturesTheHangingCloth) {
             420 * 600 / 20);  // hanging: its front faces us
 }
 
+// The BVH scene's captured foot trail (orange) and the limit drawn for the selected joint
+// (pink), as lines on the light background.
+bool is_trail_orange(const Pixel& p) {
+  return p.r > 200 && p.g > 90 && p.g < 170 && p.b < 90;
+}
+bool is_limit_pink(const Pixel& p) {
+  return p.r > 200 && p.g < 140 && p.b > 150;
+}
+
+TEST(Viewer, CapturesTheWalkWithTrailsALimitAndAHeldWrist) {
+  const fs::path out = fresh_dir("viewer_bvh");
+  const auto r = run_command(kViewer +
+                             " --scene bvh --paused --frame 120 --close-up --select LeftKnee "
+                             "--hold LeftWrist:0.1,0.35,0.25 --frames 3 --size 900x600 --capture " +
+                             (out / "bvh.png").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Image image = read_png(out / "bvh.png");
+  ASSERT_EQ(image.width, 900);
+  const int panel = 380;
+  EXPECT_GT(count_pixels(image, is_bone_blue, panel), 3000);    // the skeleton
+  EXPECT_GT(count_pixels(image, is_trail_orange, panel), 100);  // the captured foot trails
+  EXPECT_GT(count_pixels(image, is_limit_pink, panel), 100);    // the knee's hinge arc
+  EXPECT_GT(count_pixels(image, is_green, panel), 10);          // the held wrist's target
+}
+
+TEST(Viewer, RefusesAHeldJointTheClipDoesNotHave) {
+  const auto r = run_command(kViewer + " --scene bvh --hold Tail:0,0.1,0 --frames 1 --capture " +
+                             (fresh_dir("viewer_bvh_bad") / "x.png").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--hold: the clip has no joint named 'Tail'"), std::string::npos) << r.err;
+  const auto bad = run_command(kViewer + " --scene bvh --hold LeftWrist:1,2 --frames 1");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--hold must be JOINT:DX,DY,DZ (metres from the joint), got "
+                         "'LeftWrist:1,2'"),
+            std::string::npos)
+      << bad.err;
+  const auto solver = run_command(kViewer + " --scene bvh --solver newton --frames 1");
+  EXPECT_EQ(solver.exit_code, 2);
+  EXPECT_NE(solver.err.find("unknown solver 'newton' for the BVH scene (expected fabrik, ccd, "
+                            "dls or sdls)"),
+            std::string::npos)
+      << solver.err;
+}
+
 // The collider's violet (palette::collider), lit: bluer than red, red at least green, unlike
 // the background and the floor grid (greener than red) and the cloth's back (far bluer).
 bool is_collider_violet(const Pixel& p) {

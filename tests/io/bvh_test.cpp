@@ -167,6 +167,19 @@ std::string small_file(const std::string& joint =
          joint + "}\nMOTION\n" + motion;
 }
 
+// A long joint name of bytes that are not UTF-8 is shown escaped and cut, so a message naming
+// it and quoting a bad value stays one short line (a fuzz input once made it 808 bytes).
+TEST(Bvh, LongBinaryJointNamesAreCutInMessages) {
+  const std::string name = "kn" + std::string(200, '\xff');
+  const std::string message = error_of(
+      small_file("\tJOINT " + name + "\n\t{\n\t\tOFFSET 0 -1 0\n\t\tCHANNELS 1 Zrotation\n\t}\n",
+                 "Frames: 1\nFrame Time: 0.1\n0 0 0 0 0 0 " + std::string(100, '\xfe') + "\n"));
+  EXPECT_TRUE(message.starts_with("bad.bvh: line 15: frame 0 value 6 (Zrotation of kn\\xff\\xff"))
+      << message;
+  EXPECT_NE(message.find("... (cut)) '\\xfe"), std::string::npos) << message;
+  EXPECT_LT(message.size(), 800u);
+}
+
 TEST(Bvh, MalformedFilesEachGetOneClearError) {
   ASSERT_EQ(read_bvh(small_file(), "ok.bvh")->frame_count(), 2);
   ASSERT_EQ(read_bvh("\xEF\xBB\xBF" + small_file(), "bom.bvh")->frame_count(), 2);
@@ -204,6 +217,8 @@ TEST(Bvh, MalformedFilesEachGetOneClearError) {
             "bad.bvh: line 8: OFFSET of JOINT knee: 'nan' is not a finite number");
   EXPECT_EQ(error_of(small_file("\tJOINT hip\n\t{\n\t\tOFFSET 0 -1 0\n\t\tCHANNELS 0\n\t}\n")),
             "bad.bvh: line 6: a second joint is named 'hip' (the first is on line 2)");
+  EXPECT_EQ(error_of(small_file("\tJOINT kn#ee\n\t{\n\t\tOFFSET 0 -1 0\n\t}\n")),
+            "bad.bvh: line 6: joint name 'kn#ee' holds a brace or '#', which a BVH name cannot");
   EXPECT_EQ(error_of(small_file("\tJOINT knee\n\t{\n\t\tOFFSET 0 -1 0\n\t\tCHANNELS 0\n\t\tEnd "
                                 "Site\n\t\t{\n\t\t\tOFFSET 0 -1 0\n\t\t\tJOINT toe\n")),
             "bad.bvh: line 13: unexpected 'JOINT' in End Site of knee (expected '}'; End Sites "

@@ -22,11 +22,14 @@ struct IkRunLabel {
   std::string shape;                    ///< e.g. "star", "text QD"
   std::string solver;                   ///< e.g. "ccd"
   std::optional<DrawingStats> drawing;  ///< strokes and spacing, when known
+  /// The joint limits file, when the arm ran as a skeleton with limits (`ik --limits`).
+  std::optional<std::string> limits = std::nullopt;
 };
 
 /// metrics.json: {"solver", "shape", "targets", "converged_fraction", "unreachable_targets",
 /// "iterations": {"mean","median","max"}, "error": {"mean","max"}, "max_joint_step_rad",
 /// "solve_time_us": {"median","mean"}, plus the options used and, when the label has them,
+/// "limits" (the file, when the label has one; "options" then lacks "fabrik_rotations"),
 /// "drawing": {"strokes", "pen_up_targets", "spacing_before"/"spacing_after": {"mean", "cv",
 /// "min", "max"}}.
 std::string ik_metrics_json(const IkRunLabel& label, const DrawingOptions& options,

@@ -10,12 +10,12 @@
 // The signature is the tree solvers' shared one (tree_ik.h).
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 #include <array>
 #include <optional>
 #include <vector>
 
 #include "animkit/core/result.h"
+#include "animkit/core/symmetric_eigen.h"
 #include "animkit/core/types.h"
 #include "animkit/kinematics/skeleton.h"
 #include "animkit/kinematics/tree_ik.h"
@@ -57,20 +57,20 @@ struct DlsSettings {
 
 /// Scratch memory of solve_dls_tree(), owned by the caller and reused across calls. The solver
 /// sizes it for the skeleton and effectors on first use; later calls with the same skeleton
-/// size, effector count and orientation-target count allocate nothing (validate_tree_ik, which
-/// every tree solver calls first, still does). Its contents between
-/// calls carry no state: a reused workspace gives the same bits as a fresh one.
+/// size, effector count and orientation-target count allocate nothing (tests/allocation counts
+/// it). Its contents between calls carry no state: a reused workspace gives the same bits as a
+/// fresh one.
 struct DlsWorkspace {
   Eigen::MatrixXd jacobian;  ///< rows: weighted effector errors; columns: 3 per joint (world)
   Eigen::VectorXd error;     ///< weighted effector errors (positions, then orientations)
   Eigen::MatrixXd jjt;       ///< J J^T (+ lambda^2 I for DLS)
   Eigen::LLT<Eigen::MatrixXd> llt;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;  ///< SDLS: J J^T = U S^2 U^T
-  Eigen::MatrixXd jtu;                                   ///< SDLS: J^T U (columns sigma_i v_i)
-  Eigen::VectorXd solve;                                 ///< (J J^T + lambda^2 I)^-1 e
-  Eigen::VectorXd step;                                  ///< dtheta, 3 per joint (world)
-  Eigen::VectorXd step_i;                                ///< SDLS: one singular direction's
-  Eigen::VectorXd column_norms;                          ///< SDLS: rho_j, 3 per joint
+  SymmetricEigen eigen;          ///< SDLS: J J^T = U S^2 U^T
+  Eigen::MatrixXd jtu;           ///< SDLS: J^T U (columns sigma_i v_i)
+  Eigen::VectorXd solve;         ///< (J J^T + lambda^2 I)^-1 e
+  Eigen::VectorXd step;          ///< dtheta, 3 per joint (world)
+  Eigen::VectorXd step_i;        ///< SDLS: one singular direction's
+  Eigen::VectorXd column_norms;  ///< SDLS: rho_j, 3 per joint
   /// Per joint: up to two unit axes (parent frame) about which the last iteration's limit turned
   /// the joint back inward (a ball's swing and twist separately), zero when not active.
   std::vector<std::array<Vec3, 2>> pushed_back;

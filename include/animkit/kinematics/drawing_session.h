@@ -41,6 +41,12 @@ struct DrawingRun {
 /// Most frames a session runs (laps x targets): each frame keeps its pose for drawing.
 constexpr long long kMaxDrawingFrames = 10'000'000;
 
+/// The checks every drawing session makes of its input: an empty target list, a NaN/inf
+/// target (naming its index), more than kMaxDrawingFrames frames (laps x targets), a pen list
+/// whose size is not the targets'. Shared with run_skeleton_drawing().
+std::optional<Error> validate_drawing_targets(std::span<const Vec3> targets, int laps,
+                                              std::span<const char> pen_down);
+
 /// Runs the session. Errors: empty target list, a NaN/inf target (naming its index), bad
 /// options, more than kMaxDrawingFrames frames, a pen list whose size is not the targets'.
 /// `pen_down` (one flag per target, or empty for all down) is recorded in the frames.
