@@ -53,6 +53,14 @@ void size_workspace(DlsWorkspace& ws, int joints, int rows) {
   ws.pushed_back.assign(static_cast<std::size_t>(joints), {Vec3::Zero(), Vec3::Zero()});
   ws.blocked.assign(static_cast<std::size_t>(joints), 0);
   ws.scratch.resize(joints);
+  if (ws.decomposed_rows != rows) {
+    // Computed once on a matrix of the new size, so that the decompositions own their memory
+    // (they size it in compute(), never before).
+    ws.jjt.setIdentity();
+    ws.llt.compute(ws.jjt);
+    ws.eigen.compute(ws.jjt);
+    ws.decomposed_rows = rows;
+  }
 }
 
 // Rows of the weighted error e and its Jacobian J (d e / d omega_j, omega_j joint j's world
@@ -87,16 +95,35 @@ void build_rows(const Skeleton& skeleton, const TreeIkProblem& problem, const Dl
   }
 }
 
-// A hinge moves only about its axis: its columns keep that component alone (world axis =
-// global rotation * rest-frame axis, since q_rel is a rotation about it).
-void restrict_to_hinge(const TreeIkProblem& problem, const SkeletonPose& pose, int j,
+// A joint moves only along the freedoms its limit has, and its columns keep those alone: a
+// hinge turns about its axis (world axis = global rotation * rest-frame axis, since q_rel is a
+// rotation about it), a ball without a cone about its bone only (its twist axis, likewise), and
+// a limit with no range at all (a held root, tree_ik.h) not at all. Otherwise the step would
+// count on turns the limit takes back after it, one direction at a time.
+void restrict_to_limit(const TreeIkProblem& problem, const SkeletonPose& pose, int j,
                        DlsWorkspace& ws) {
   const JointLimit* limit = limit_of(problem, j);
-  const auto* hinge = limit != nullptr ? std::get_if<HingeLimit>(limit) : nullptr;
-  if (hinge == nullptr) return;
-  const Vec3 a = (pose.global_rotations[static_cast<std::size_t>(j)] * hinge->axis).normalized();
-  // Row by row with fixed-size rows: a product of the whole block would allocate a temporary.
+  if (limit == nullptr) return;
+  Vec3 axis;
+  bool turns = true;
+  if (const auto* hinge = std::get_if<HingeLimit>(limit)) {
+    axis = hinge->axis;
+    turns = hinge->min_angle < hinge->max_angle;
+  } else if (const auto* ball = std::get_if<BallLimit>(limit);
+             ball != nullptr && ball->swing_angle == 0.0 &&
+             ball->swing_angle_2.value_or(0.0) == 0.0) {
+    axis = ball->twist_axis;
+    turns = ball->min_twist < ball->max_twist;
+  } else {
+    return;
+  }
   auto cols = ws.jacobian.middleCols<3>(3 * j);
+  if (!turns) {
+    cols.setZero();
+    return;
+  }
+  const Vec3 a = (pose.global_rotations[static_cast<std::size_t>(j)] * axis).normalized();
+  // Row by row with fixed-size rows: a product of the whole block would allocate a temporary.
   for (Eigen::Index r = 0; r < cols.rows(); ++r) cols.row(r) = cols.row(r).dot(a) * a.transpose();
 }
 
@@ -228,6 +255,11 @@ void apply_step(const Skeleton& skeleton, const TreeIkProblem& problem, Skeleton
 
 }  // namespace
 
+void DlsWorkspace::resize(const Skeleton& skeleton, const TreeIkProblem& problem) {
+  size_workspace(*this, skeleton.joint_count(),
+                 3 * (static_cast<int>(problem.effectors.size()) + orientation_count(problem)));
+}
+
 std::optional<Error> DlsSettings::validate() const {
   if (max_iterations < 1)
     return Error{"DLS max_iterations must be >= 1, got " + std::to_string(max_iterations)};
@@ -286,7 +318,7 @@ Result<TreeIkResult> solve_dls_tree(const Skeleton& skeleton, const TreeIkProble
     const double before = errors.position + errors.orientation;
     build_rows(skeleton, problem, settings, pose, ws);
     std::fill(ws.blocked.begin(), ws.blocked.end(), 0);
-    for (int j = 0; j < joints; ++j) restrict_to_hinge(problem, pose, j, ws);
+    for (int j = 0; j < joints; ++j) restrict_to_limit(problem, pose, j, ws);
     take_step(settings, ws);
     // Clamping loop (Baerlocher & Boulic 2004): a joint its limit pushed back last iteration
     // whose step points outward again loses that direction, and the step is taken anew.

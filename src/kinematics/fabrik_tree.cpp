@@ -330,10 +330,7 @@ void finish_with_dls(const Skeleton& skeleton, const TreeIkProblem& problem,
     result.orientation_error = finished->orientation_error;
     result.converged = finished->converged;
   }
-  if (finished) {
-    result.iterations += finished->iterations;
-    result.finish_iterations = finished->iterations;
-  }
+  if (finished) result.finish_iterations = finished->iterations;
 }
 
 }  // namespace
@@ -364,6 +361,8 @@ Result<TreeIkResult> solve_fabrik_tree(const Skeleton& skeleton, const TreeIkPro
     return fail(error->message);
   if (auto error = settings.validate()) return fail(error->message);
   workspace.resize(skeleton);
+  // Sized whether or not the finish runs, so that a warm workspace never allocates for it.
+  if (settings.finish_with_dls) workspace.dls.resize(skeleton, problem);
   FabrikTreeIteration iteration(skeleton, problem, workspace);
   TreeIkResult result =
       detail::run_tree_ik(skeleton, problem, loop, workspace.scratch, pose, iteration);

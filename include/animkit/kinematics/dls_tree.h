@@ -78,6 +78,15 @@ struct DlsWorkspace {
   std::vector<unsigned char> blocked;
   /// Effector bookkeeping for the kick out of a stalled, singular pose (tree_ik.h).
   TreeIkScratch scratch;
+  /// The row count llt and eigen were last computed with (-1: never), so that resize() runs
+  /// them once on a new size and they hold their memory before the first step needs them.
+  int decomposed_rows = -1;
+
+  /// Sizes everything, the decompositions included, for `skeleton` and the shape of `problem`
+  /// (effector and orientation-target counts); allocates only when those change. Each solve
+  /// does it first; a caller that may or may not solve (FABRIK's DLS finish) calls it so that
+  /// a later solve allocates nothing.
+  void resize(const Skeleton& skeleton, const TreeIkProblem& problem);
 };
 
 /// DLS or SDLS on a tree, same contract as every tree solver (tree_ik.h): the pose is the
@@ -85,7 +94,8 @@ struct DlsWorkspace {
 /// and, like every joint, may turn (a root that must not turn gets a limit with no range).
 /// Each iteration builds the Jacobian of the weighted effector errors (position rows
 /// omega x (p_e - p_j), orientation rows the identity, for every joint j above effector e,
-/// roots included; a hinge's columns only along its axis), takes the step, turns each joint's world
+/// roots included; a hinge's columns only along its axis, a ball without a cone's along its bone,
+/// a limit with no range's none), takes the step, turns each joint's world
 /// rotation by its rotation vector and constrains it by its limit. A joint resting on its limit
 /// whose step points outward loses that direction (the gradient of the active constraint; a
 /// ball's swing and twist apart) and the step is solved again (a clamping loop, Baerlocher &

@@ -28,7 +28,8 @@ struct FabrikTreeSettings {
   /// FABRIK's passes can settle in a fixed point short of a target the limits allow (see the
   /// limits of the method below), where DLS, following the gradient with the joints at their
   /// limits taken out, goes on. The better of the two poses is returned; TreeIkResult counts
-  /// the DLS iterations in `iterations` and apart in `finish_iterations`. Nothing changes for a
+  /// the DLS iterations in `finish_iterations` (`iterations` counts the passes alone, so it
+  /// stays within max_iterations). Nothing changes for a
   /// solve the passes converge (or one with a target out of reach). false: FABRIK only.
   bool finish_with_dls = true;
   /// The DLS finish's settings; its tolerance and angular_tolerance are replaced by the two
@@ -40,10 +41,11 @@ struct FabrikTreeSettings {
 };
 
 /// Caller-owned scratch of solve_fabrik_tree(): sized for a skeleton once (by resize() or by
-/// the first solve), after which solves on that skeleton allocate nothing, except that the DLS
-/// finish's workspace sizes itself (as DlsWorkspace does) in the first solve that needs it and
-/// again when the effector or orientation-target count changes. Its contents between solves
-/// mean nothing; a reused workspace gives the same bits as a fresh one.
+/// the first solve), after which solves on that skeleton allocate nothing; the DLS finish's
+/// workspace is sized in every solve (finish or not) for the problem's shape, so it allocates
+/// again only when the effector or orientation-target count changes (as DlsWorkspace does).
+/// Its contents between solves mean nothing; a reused workspace gives the same bits as a fresh
+/// one.
 struct FabrikTreeWorkspace {
   TreeIkScratch scratch;
   std::vector<Vec3> desired;           ///< backward pass: where each joint is asked to go

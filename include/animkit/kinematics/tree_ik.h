@@ -49,7 +49,8 @@ struct TreeIkProblem {
 /// What a solve did.
 struct TreeIkResult {
   int iterations = 0;  ///< full iterations run (a sweep, a FABRIK pass, a DLS step)
-  /// Of `iterations`, those another solver ran to finish the solve (FABRIK's DLS finish).
+  /// Iterations another solver ran after those to finish the solve (FABRIK's DLS finish;
+  /// not counted in `iterations`).
   int finish_iterations = 0;
   double error = 0.0;  ///< largest |effector joint - target position| (scene units)
   /// Largest angle (rad) between an effector joint's orientation and its target, over the
