@@ -14,6 +14,7 @@
 #include "footlock_command.h"
 #include "ik_command.h"
 #include "reach_command.h"
+#include "scenes_command.h"
 
 namespace {
 
@@ -41,6 +42,7 @@ int run(CLI::App& app, int argc, char** argv) {
   const auto run_demo = animkit::cli::add_demo_command(app);
   const auto run_footlock = animkit::cli::add_footlock_command(app);
   const auto run_reach = animkit::cli::add_reach_command(app);
+  const auto run_scenes = animkit::cli::add_scenes_command(app);
 
   try {
     app.parse(argc, argv);
@@ -59,6 +61,7 @@ int run(CLI::App& app, int argc, char** argv) {
     if (app.got_subcommand("cloth-study")) return run_cloth_study();
     if (app.got_subcommand("footlock")) return run_footlock();
     if (app.got_subcommand("reach")) return run_reach();
+    if (app.got_subcommand("scenes")) return run_scenes();
     return run_demo();
   } catch (const std::exception& e) {  // e.g. out of memory: still one line, never a crash
     return animkit::cli::report_error(e.what());

@@ -14,11 +14,11 @@
 #include "animkit/core/validation.h"
 #include "animkit/io/bvh.h"
 #include "animkit/io/bvh_motion.h"
-#include "animkit/io/human_limits.h"
 #include "animkit/io/joint_limits_file.h"
 #include "animkit/io/reach_report.h"
 #include "animkit/kinematics/foot_lock.h"
 #include "animkit/kinematics/hand_reach.h"
+#include "animkit/kinematics/human_limits.h"
 #include "cli_errors.h"
 #include "run_output.h"
 
@@ -89,11 +89,11 @@ int run(ReachArgs args) {
   std::vector<JointLimit> limits;
   std::string limits_label;
   if (args.limits.empty()) {
-    int limited = 0;
-    auto defaults = cmu_human_limits(skeleton->names(), &limited);
-    if (!defaults) return report_error(defaults.error().message);
-    limits = std::move(*defaults);
-    limits_label = "default human limits (" + std::to_string(limited) + " joints)";
+    // The viewer's defaults too: knees and elbows one-way hinges about the axes this clip
+    // bends them about, other joints wide balls (kinematics/human_limits.h).
+    limits = human_joint_limits(*skeleton);
+    fit_hinge_axes(*skeleton, motion_from_bvh(*clip), limits);
+    limits_label = "default human limits";
   } else {
     const auto set = read_joint_limits_file(args.limits);
     if (!set) return report_error(set.error().message);
@@ -175,8 +175,8 @@ std::function<int()> add_reach_command(CLI::App& app) {
   cmd->add_option("--scale", args->scale, "Metres per file unit (CMU's BVH: 0.056444)")
       ->capture_default_str();
   cmd->add_option("--limits", args->limits,
-                  "Joint limits JSON keyed by joint name, degrees (default: the built-in human "
-                  "limits, data/limits/cmu_human.json, for the joints they name)");
+                  "Joint limits JSON keyed by joint name, degrees (default: human limits, knees "
+                  "and elbows hinges fitted to the clip, other joints wide balls)");
   cmd->add_option("--solver", args->solver, "Tree IK solver: fabrik, ccd, dls or sdls")
       ->capture_default_str();
   cmd->add_option("--max-iterations", args->settings.max_iterations, "Iteration cap (>= 1)")

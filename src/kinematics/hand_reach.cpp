@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "animkit/core/validation.h"
-#include "animkit/kinematics/tree_ik_solvers.h"
+#include "animkit/kinematics/tree_ik_solver.h"
 
 namespace animkit {
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "animkit/core/quaternion_math.h"
-#include "animkit/kinematics/tree_ik_solvers.h"
+#include "animkit/kinematics/tree_ik_solver.h"
 
 namespace animkit {
 

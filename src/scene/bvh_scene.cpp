@@ -6,9 +6,6 @@
 #include <limits>
 #include <string>
 
-#include "animkit/kinematics/ccd_tree.h"
-#include "animkit/kinematics/dls_tree.h"
-#include "animkit/kinematics/fabrik_tree.h"
 #include "animkit/kinematics/human_limits.h"
 #include "animkit/scene/skeleton_drawing.h"
 
@@ -33,31 +30,10 @@ double extend_bounds(const Skeleton& skeleton, const SkeletalMotion& motion,
   return lowest;
 }
 
-Result<TreeIkResult> solve_with(TreeIkSolverKind kind, const Skeleton& skeleton,
-                                const TreeIkProblem& problem, FabrikTreeWorkspace& fabrik,
-                                CcdTreeWorkspace& ccd, DlsWorkspace& dls, SkeletonPose& pose) {
-  switch (kind) {
-    case TreeIkSolverKind::fabrik:
-      return solve_fabrik_tree(skeleton, problem, FabrikTreeSettings{}, fabrik, pose);
-    case TreeIkSolverKind::ccd:
-      return solve_ccd_tree(skeleton, problem, CcdTreeSettings{}, ccd, pose);
-    case TreeIkSolverKind::dls:
-      return solve_dls_tree(skeleton, problem, DlsSettings{}, dls, pose);
-    case TreeIkSolverKind::sdls: {
-      DlsSettings settings;
-      settings.method = DlsMethod::selective;
-      return solve_dls_tree(skeleton, problem, settings, dls, pose);
-    }
-  }
-  return fail("unknown tree IK solver");
-}
-
 }  // namespace
 
 struct BvhScene::SolverWorkspaces {
-  FabrikTreeWorkspace fabrik;
-  CcdTreeWorkspace ccd;
-  DlsWorkspace dls;
+  TreeIkSolvers solvers;
 };
 
 BvhScene::BvhScene() : workspaces_(std::make_unique<SolverWorkspaces>()) {}
@@ -173,8 +149,8 @@ void BvhScene::solve() {
   }
   const TreeIkProblem problem{effectors_, limits_};
   const auto start = std::chrono::steady_clock::now();
-  const auto result = solve_with(options_.solver, skeleton_, problem, workspaces_->fabrik,
-                                 workspaces_->ccd, workspaces_->dls, pose_);
+  const auto result =
+      solve_tree_ik(options_.solver, skeleton_, problem, workspaces_->solvers, pose_);
   const auto stop = std::chrono::steady_clock::now();
   if (!result) {
     // Inputs are checked by hold(); a failure here leaves the clip's pose on screen.

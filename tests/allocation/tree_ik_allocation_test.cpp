@@ -8,11 +8,7 @@
 
 #include "../kinematics/tree_ik_samples.h"
 #include "animkit/core/symmetric_eigen.h"
-#include "animkit/kinematics/ccd_tree.h"
-#include "animkit/kinematics/dls_tree.h"
-#include "animkit/kinematics/fabrik_tree.h"
 #include "animkit/kinematics/tree_ik_solver.h"
-#include "animkit/kinematics/tree_ik_solvers.h"
 #include "animkit/kinematics/two_bone_ik.h"
 #include "counting_malloc.h"
 
@@ -21,28 +17,6 @@ namespace {
 
 using testing::AllocationCount;
 using namespace tree_samples;
-
-// Solves with the solver `kind` through workspaces the caller keeps between calls.
-struct Solvers {
-  FabrikTreeWorkspace fabrik;
-  CcdTreeWorkspace ccd;
-  DlsWorkspace dls;
-
-  Result<TreeIkResult> solve(TreeIkSolverKind kind, const Skeleton& s, const TreeIkProblem& problem,
-                             SkeletonPose& pose) {
-    switch (kind) {
-      case TreeIkSolverKind::fabrik:
-        return solve_fabrik_tree(s, problem, FabrikTreeSettings{}, fabrik, pose);
-      case TreeIkSolverKind::ccd:
-        return solve_ccd_tree(s, problem, CcdTreeSettings{}, ccd, pose);
-      case TreeIkSolverKind::dls:
-        return solve_dls_tree(s, problem, DlsSettings{}, dls, pose);
-      case TreeIkSolverKind::sdls:
-        return solve_dls_tree(s, problem, DlsSettings{.method = DlsMethod::selective}, dls, pose);
-    }
-    return std::unexpected(Error{"unknown solver"});
-  }
-};
 
 TEST(TreeIkAllocation, CountingSeesAllocations) {
   // The counter itself must work, or the tests below could not fail.
@@ -63,7 +37,7 @@ TEST(TreeIkAllocation, SolvesWithAWarmWorkspaceAllocateNothing) {
     for (const bool oriented : {false, true}) {
       for (const TreeIkSolverKind kind : all_tree_ik_solvers()) {
         std::mt19937_64 rng(12);
-        Solvers solvers;
+        TreeIkSolvers solvers;
         SkeletonPose pose = skeleton_rest_pose(s);
         for (int trial = 0; trial < 12; ++trial) {
           const SkeletonPose target = random_pose(s, limits, rng, 1.0);
@@ -73,7 +47,7 @@ TEST(TreeIkAllocation, SolvesWithAWarmWorkspaceAllocateNothing) {
           Result<TreeIkResult> result;
           {
             AllocationCount count;
-            result = solvers.solve(kind, s, problem, pose);
+            result = solve_tree_ik(kind, s, problem, solvers, pose);
             made = count.value();
           }
           ASSERT_TRUE(result);
@@ -110,7 +84,7 @@ TEST(TreeIkAllocation, TwoBoneSolvesAllocateNothing) {
   EXPECT_TRUE(result);
 }
 
-// solve_tree_ik() (tree_ik_solvers.h), as the CLI's --solver switch uses it: one TreeIkSolvers
+// solve_tree_ik() (tree_ik_solver.h), as the CLI's --solver switch uses it: one TreeIkSolvers
 // warmed once per solver, then the solvers taken in turn (DLS and SDLS share a workspace).
 TEST(TreeIkAllocation, SolveTreeIkBySolverKindAllocatesNothingWhenWarm) {
   const Skeleton s = figure();

@@ -12,7 +12,6 @@
 #include "../support/run_command.h"
 #include "../support/temp_files.h"
 #include "animkit/io/bvh.h"
-#include "animkit/io/human_limits.h"
 #include "animkit/io/png.h"
 #include "animkit/io/reach_report.h"
 
@@ -134,12 +133,6 @@ TEST(ReachCli, UnreachableTargetWritesTheClosestPoseAndSaysSo) {
   EXPECT_LT(metrics["foot_drift_cm"].get<double>(), 0.01);
   EXPECT_TRUE(fs::exists(out / "reached.bvh"));
   EXPECT_TRUE(fs::exists(out / "reach.png"));
-}
-
-// The built-in limits are the shipped example file, byte for byte.
-TEST(ReachCli, DefaultLimitsAreTheShippedFile) {
-  EXPECT_EQ(read_file(ANIMKIT_TEST_DATA_DIR "/limits/cmu_human.json"),
-            std::string(animkit::cmu_human_limits_json()));
 }
 
 TEST(ReachCli, BadInputIsOneLineAndWritesNothing) {

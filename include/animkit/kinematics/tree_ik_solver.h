@@ -1,10 +1,18 @@
 #pragma once
 // The registry of IK solvers on skeleton trees (issue 12): one list that the viewer's menu,
-// the CLI's choices and parametrized tests iterate. Each solver keeps its own settings and
-// workspace types (fabrik_tree.h, ccd_tree.h, dls_tree.h); they share the signature in tree_ik.h.
+// the CLI's choices and parametrized tests iterate, and one call that runs the solver a kind
+// names (what a caller that lets its user pick the solver holds, instead of a switch over four
+// solve functions). Each solver keeps its own settings and workspace types (fabrik_tree.h,
+// ccd_tree.h, dls_tree.h); they share the signature in tree_ik.h.
 #include <optional>
 #include <span>
 #include <string_view>
+
+#include "animkit/core/result.h"
+#include "animkit/kinematics/ccd_tree.h"
+#include "animkit/kinematics/dls_tree.h"
+#include "animkit/kinematics/fabrik_tree.h"
+#include "animkit/kinematics/tree_ik.h"
 
 namespace animkit {
 
@@ -22,5 +30,26 @@ std::string_view to_string(TreeIkSolverKind kind);
 std::optional<TreeIkSolverKind> parse_tree_ik_solver(std::string_view name);
 /// Every tree solver, in menu order.
 std::span<const TreeIkSolverKind> all_tree_ik_solvers();
+
+/// Settings and caller-owned workspaces of every tree solver (each sized on its first solve,
+/// after which solves on the same skeleton allocate nothing, as each solver promises).
+struct TreeIkSolvers {
+  FabrikTreeSettings fabrik;
+  CcdTreeSettings ccd;
+  /// DLS and SDLS share these; `dls.method` is set from the kind on every solve.
+  DlsSettings dls;
+  FabrikTreeWorkspace fabrik_workspace;
+  CcdTreeWorkspace ccd_workspace;
+  DlsWorkspace dls_workspace;
+
+  /// Gives every solver the same iteration cap and position tolerance (scene units).
+  void set_stopping(int max_iterations, double tolerance);
+};
+
+/// Runs the solver `kind` names with its settings and workspace from `solvers`: the shared
+/// contract of tree_ik.h (the pose is the start and becomes the solution; errors leave it).
+Result<TreeIkResult> solve_tree_ik(TreeIkSolverKind kind, const Skeleton& skeleton,
+                                   const TreeIkProblem& problem, TreeIkSolvers& solvers,
+                                   SkeletonPose& pose);
 
 }  // namespace animkit
