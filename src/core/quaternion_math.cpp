@@ -1,5 +1,7 @@
 #include "animkit/core/quaternion_math.h"
 
+#include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -37,6 +39,15 @@ double rotation_angle_between(const Quat& a, const Quat& b) {
   const Quat d = a.conjugate() * b;
   // atan2 form: accurate for small and large angles alike, no acos domain issues.
   return 2.0 * std::atan2(d.vec().norm(), std::abs(d.w()));
+}
+
+double largest_rotation_change(std::span<const Quat> before, std::span<const Quat> after) {
+  assert(before.size() == after.size());
+  double largest = 0.0;
+  for (std::size_t j = 0; j < before.size(); ++j) {
+    largest = std::max(largest, rotation_angle_between(before[j], after[j]));
+  }
+  return largest;
 }
 
 }  // namespace animkit

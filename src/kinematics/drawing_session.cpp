@@ -22,15 +22,6 @@ double median(std::vector<double> values) {
   return 0.5 * (lower + upper);
 }
 
-double largest_rotation_change(const Pose& before, const Pose& after) {
-  double largest = 0.0;
-  for (std::size_t j = 0; j < before.local_rotations.size(); ++j) {
-    largest = std::max(largest,
-                       rotation_angle_between(before.local_rotations[j], after.local_rotations[j]));
-  }
-  return largest;
-}
-
 }  // namespace
 
 std::optional<Error> DrawingOptions::validate() const {
@@ -87,7 +78,8 @@ Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets
       frame.pen_down = pen_down.empty() || pen_down[t] != 0;
       frame.end_effector = pose.end_effector();
       frame.ik = *solved;
-      frame.joint_step_rad = t == 0 ? 0.0 : largest_rotation_change(previous, pose);
+      frame.joint_step_rad =
+          t == 0 ? 0.0 : largest_rotation_change(previous.local_rotations, pose.local_rotations);
       frame.solve_time_us = std::chrono::duration<double, std::micro>(stop - start).count();
       frame.joint_positions = pose.global_positions;
       run.frames.push_back(std::move(frame));

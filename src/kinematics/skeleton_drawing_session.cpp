@@ -9,19 +9,6 @@
 
 namespace animkit {
 
-namespace {
-
-double largest_rotation_change(const SkeletonPose& before, const SkeletonPose& after) {
-  double largest = 0.0;
-  for (std::size_t j = 0; j < before.local_rotations.size(); ++j) {
-    largest = std::max(largest,
-                       rotation_angle_between(before.local_rotations[j], after.local_rotations[j]));
-  }
-  return largest;
-}
-
-}  // namespace
-
 std::optional<Error> SkeletonDrawingOptions::validate() const {
   if (laps < 1) return Error{"laps must be at least 1, got " + std::to_string(laps)};
   // Every solver checks the same two numbers with the same words (tree_ik_common).
@@ -65,7 +52,8 @@ Result<DrawingRun> run_skeleton_drawing(const Skeleton& skeleton, int effector,
       frame.pen_down = pen_down.empty() || pen_down[t] != 0;
       frame.end_effector = pose.global_positions[static_cast<std::size_t>(effector)];
       frame.ik = IkResult{solved->iterations, solved->error, solved->converged, solved->reachable};
-      frame.joint_step_rad = t == 0 ? 0.0 : largest_rotation_change(previous, pose);
+      frame.joint_step_rad =
+          t == 0 ? 0.0 : largest_rotation_change(previous.local_rotations, pose.local_rotations);
       frame.solve_time_us = std::chrono::duration<double, std::micro>(stop - start).count();
       frame.joint_positions = pose.global_positions;
       run.frames.push_back(std::move(frame));

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -63,6 +65,25 @@ TEST(PerpendicularAxis, IsUnitAndPerpendicular) {
     EXPECT_NEAR(axis.norm(), 1.0, 1e-15);
     EXPECT_NEAR(axis.dot(v), 0.0, 1e-15);
   }
+}
+
+}  // namespace
+}  // namespace animkit
+
+namespace animkit {
+namespace {
+
+TEST(LargestRotationChange, IsTheLargestAngleBetweenMatchingRotations) {
+  const std::vector<Quat> before{Quat::Identity(), Quat(Eigen::AngleAxisd(0.3, Vec3::UnitX())),
+                                 Quat(Eigen::AngleAxisd(1.0, Vec3::UnitZ()))};
+  std::vector<Quat> after = before;
+  EXPECT_EQ(largest_rotation_change(before, after), 0.0);
+  after[1] = Quat(Eigen::AngleAxisd(0.8, Vec3::UnitX()));
+  after[2] = Quat(Eigen::AngleAxisd(1.2, Vec3::UnitZ()));
+  EXPECT_NEAR(largest_rotation_change(before, after), 0.5, 1e-12);
+  after[0] = Quat(-1, 0, 0, 0);  // the identity again, sign flipped: no turn
+  EXPECT_NEAR(largest_rotation_change(before, after), 0.5, 1e-12);
+  EXPECT_EQ(largest_rotation_change({}, {}), 0.0);
 }
 
 }  // namespace

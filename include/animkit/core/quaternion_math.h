@@ -1,5 +1,7 @@
 #pragma once
 // Quaternion helpers that stay accurate where the textbook formulas lose precision.
+#include <span>
+
 #include "animkit/core/types.h"
 
 namespace animkit {
@@ -16,5 +18,9 @@ Vec3 perpendicular_axis(const Vec3& v);
 
 /// Angle in radians, in [0, pi], of the rotation that takes `a` to `b` (sign of q ignored).
 double rotation_angle_between(const Quat& a, const Quat& b);
+
+/// The largest rotation_angle_between(before[i], after[i]) over two equally long lists of
+/// joint rotations (0 when empty): the "jitter" of a pose change, as the drawing sessions report.
+double largest_rotation_change(std::span<const Quat> before, std::span<const Quat> after);
 
 }  // namespace animkit
