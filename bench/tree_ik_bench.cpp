@@ -22,9 +22,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <kdl/frames.hpp>
-#include <kdl/jntarray.hpp>
-#include <kdl/tree.hpp>
 #include <kdl/treefksolverpos_recursive.hpp>
 #include <kdl/treeiksolvervel_wdls.hpp>
 #include <map>
@@ -36,11 +33,16 @@
 #include "animkit/kinematics/ccd_tree.h"
 #include "animkit/kinematics/dls_tree.h"
 #include "animkit/kinematics/fabrik_tree.h"
+#include "kdl_skeleton.h"
 #include "ratio_reporter.h"
 
 namespace {
 
 using animkit::Vec3;
+using animkit::bench::kdl;
+using animkit::bench::kdl_frame;
+using animkit::bench::kdl_model;
+using animkit::bench::KdlModel;
 
 constexpr const char* kEffectorNames[] = {"lhand", "rhand", "LeftAnkle", "RightAnkle"};
 constexpr double kTolerance = 1e-4;  // metres
@@ -170,70 +172,12 @@ void animkit_ccd(benchmark::State& state) {
 
 // ---- KDL -------------------------------------------------------------------------------------
 
-KDL::Vector kdl(const Vec3& v) {
-  return KDL::Vector(v.x(), v.y(), v.z());
-}
-
-struct KdlModel {
-  KDL::Tree tree{"Hips"};
-  std::vector<std::string> tips;  // per animkit joint: the KDL segment ending at it
-  std::vector<int> first_q;       // per animkit joint: its first KDL joint value, -1 if none
-  unsigned joints = 0;
-};
-
-KdlModel kdl_model(const Clip& c) {
-  KdlModel m;
-  const auto& s = c.skeleton;
-  m.tips.assign(static_cast<std::size_t>(s.joint_count()), "Hips");
-  m.first_q.assign(static_cast<std::size_t>(s.joint_count()), -1);
-  for (int j = 0; j < s.joint_count(); ++j) {
-    const int p = s.parents()[j];
-    if (p < 0) continue;
-    std::string parent = m.tips[p], name = s.names()[j];
-    m.tree.addSegment(KDL::Segment(name + "_offset", KDL::Joint(KDL::Joint::None),
-                                   KDL::Frame(kdl(s.rest_offsets()[j]))),
-                      parent);
-    parent = name + "_offset";
-    for (animkit::BvhChannel ch : c.bvh.channels[j]) {
-      const auto type = ch == animkit::BvhChannel::x_rotation   ? KDL::Joint::RotX
-                        : ch == animkit::BvhChannel::y_rotation ? KDL::Joint::RotY
-                        : ch == animkit::BvhChannel::z_rotation ? KDL::Joint::RotZ
-                                                                : KDL::Joint::None;
-      if (type == KDL::Joint::None) continue;
-      const std::string seg = name + "_" + std::string(animkit::bvh_channel_name(ch));
-      if (m.first_q[j] < 0) m.first_q[j] = static_cast<int>(m.joints);
-      m.tree.addSegment(KDL::Segment(seg, KDL::Joint(seg, type)), parent);
-      parent = seg;
-      ++m.joints;
-    }
-    m.tips[j] = parent;
-  }
-  return m;
-}
-
-// KDL's joint values of BVH frame f: the rotation channels in radians, in segment order.
-KDL::JntArray kdl_frame(const Clip& c, const KdlModel& m, int f) {
-  KDL::JntArray q(m.joints);
-  int column = 0;
-  for (int j = 0; j < c.skeleton.joint_count(); ++j) {
-    int k = m.first_q[j];
-    for (animkit::BvhChannel ch : c.bvh.channels[j]) {
-      const bool rotation = ch == animkit::BvhChannel::x_rotation ||
-                            ch == animkit::BvhChannel::y_rotation ||
-                            ch == animkit::BvhChannel::z_rotation;
-      if (rotation && k >= 0) q(k++) = c.bvh.motion(f, column) * std::numbers::pi / 180.0;
-      ++column;
-    }
-  }
-  return q;
-}
-
 // Both models must be one skeleton: KDL's FK of a frame equals animkit's, in the Hips frame.
 void check_same_skeleton(const Clip& c, const KdlModel& m) {
   KDL::TreeFkSolverPos_recursive fk(m.tree);
   double worst = 0.0;
   for (int f = 0; f < c.bvh.frame_count(); f += 97) {
-    const KDL::JntArray q = kdl_frame(c, m, f);
+    const KDL::JntArray q = kdl_frame(c.bvh, m, f);
     const animkit::SkeletonPose& pose = c.frames[static_cast<std::size_t>(f)];
     for (int j = 0; j < c.skeleton.joint_count(); ++j) {
       KDL::Frame frame;
@@ -251,7 +195,7 @@ void check_same_skeleton(const Clip& c, const KdlModel& m) {
 
 void kdl_tree(benchmark::State& state, double lambda) {
   const Clip& c = clip();
-  const KdlModel m = kdl_model(c);
+  const KdlModel m = kdl_model(c.bvh, c.skeleton);
   check_same_skeleton(c, m);
   std::vector<std::string> endpoints;
   for (int j : c.effector_joints) endpoints.push_back(m.tips[j]);
