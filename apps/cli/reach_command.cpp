@@ -92,7 +92,9 @@ int run(ReachArgs args) {
     // The viewer's defaults too: knees and elbows one-way hinges about the axes this clip
     // bends them about, other joints wide balls (kinematics/human_limits.h).
     limits = human_joint_limits(*skeleton);
-    fit_hinge_axes(*skeleton, motion_from_bvh(*clip), limits);
+    if (auto error = fit_hinge_axes(*skeleton, motion_from_bvh(*clip), limits)) {
+      return report_error(error->message);
+    }
     limits_label = "default human limits";
   } else {
     const auto set = read_joint_limits_file(args.limits);

@@ -17,7 +17,8 @@ std::string cli_command(const SceneEntry& entry) {
     case SceneKind::ik:
       return "animkit ik";
     case SceneKind::bvh:
-      return "animkit footlock --in data/cmu/131_01.bvh --out DIR (or animkit reach)";
+      return "animkit footlock --in data/cmu/131_01.bvh --scale 0.056444 --out DIR (or animkit "
+             "reach)";
     case SceneKind::cloth:
       return "animkit cloth --scene " + std::string(entry.name);
   }

@@ -38,6 +38,12 @@ Result<BvhView> BvhView::create(const BvhViewOptions& options) {
   auto scene = BvhScene::create(std::move(*skeleton), motion_from_bvh(*clip), std::move(limits),
                                 options.scene);
   if (!scene) return fail(options.path + ": " + scene.error().message);
+  const int frames = scene->clock().frame_count();
+  if (options.start_frame < 0 || options.start_frame >= frames) {
+    return fail("--frame must be in [0, " + std::to_string(frames - 1) + "] (" + options.path +
+                " has " + std::to_string(frames) + " frames), got " +
+                std::to_string(options.start_frame));
+  }
   scene->seek(options.start_frame);
   std::string error;
   if (!options.selected.empty()) {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <variant>
@@ -42,9 +43,6 @@ void size_workspace(DlsWorkspace& ws, int joints, int rows) {
   ws.jacobian.resize(rows, cols);
   ws.error.resize(rows);
   ws.jjt.resize(rows, rows);
-  // llt and eigen size themselves in their first compute() and keep that memory after (Eigen
-  // resizes to an unchanged size without allocating). Not rebuilt with a size here: copying a
-  // decomposition that never computed reads its uninitialized status (UBSan).
   ws.jtu.resize(cols, rows);
   ws.solve.resize(rows);
   ws.step.resize(cols);
@@ -127,19 +125,12 @@ void restrict_to_limit(const TreeIkProblem& problem, const SkeletonPose& pose, i
   for (Eigen::Index r = 0; r < cols.rows(); ++r) cols.row(r) = cols.row(r).dot(a) * a.transpose();
 }
 
-// The world rotation of joint j's parent; the identity above a root (its local frame is the
-// world's).
-Quat parent_world_rotation(const Skeleton& skeleton, const SkeletonPose& pose, int j) {
-  const int parent = skeleton.parents()[static_cast<std::size_t>(j)];
-  return parent < 0 ? Quat::Identity() : pose.global_rotations[static_cast<std::size_t>(parent)];
-}
-
 // Takes push axis k of joint j (world `inward`) out of its columns, orthogonal to the axis
 // blocked before it, so that two blocked axes remove exactly their span.
 void block_axis(const SkeletonPose& pose, const Skeleton& skeleton, int j, unsigned k,
                 DlsWorkspace& ws) {
   const auto ju = static_cast<std::size_t>(j);
-  const Quat g = parent_world_rotation(skeleton, pose, j);
+  const Quat g = detail::parent_rotation(skeleton, pose, j);
   Vec3 r = g * ws.pushed_back[ju][k];
   if (ws.blocked[ju] & (1u << (1 - k))) {
     const Vec3 other = (g * ws.pushed_back[ju][1 - k]).normalized();
@@ -226,7 +217,7 @@ void apply_step(const Skeleton& skeleton, const TreeIkProblem& problem, Skeleton
     const Vec3 dtheta = ws.step.segment<3>(3 * j);
     Quat& local = pose.local_rotations[ju];
     if (dtheta.squaredNorm() > 0.0) {
-      const Vec3 r = parent_world_rotation(skeleton, pose, j).conjugate() * dtheta;
+      const Vec3 r = detail::parent_rotation(skeleton, pose, j).conjugate() * dtheta;
       local = (from_rotation_vector(r) * local).normalized();
     }
     std::array<Vec3, 2>& pushed = ws.pushed_back[ju];
@@ -314,6 +305,12 @@ Result<TreeIkResult> solve_dls_tree(const Skeleton& skeleton, const TreeIkProble
   detail::index_effectors(skeleton, problem.effectors, ws.scratch);
   int stalled = 0, kicks = 0;
   TreeIkErrors errors = tree_ik_errors(pose, problem.effectors);
+  // A kick leaves the pose it bends; the best pose seen before any kick is kept, and returned
+  // if the solve ends worse (a kick near the iteration cap, or an out-of-reach target whose
+  // straight limb stalls and is kicked again and again).
+  auto total = [](const TreeIkErrors& e) { return e.position + e.orientation; };
+  double best_total = std::numeric_limits<double>::infinity();
+  auto& best_rotations = ws.scratch.best_local_rotations;
   while (!done(errors) && result.iterations < settings.max_iterations) {
     const double before = errors.position + errors.orientation;
     build_rows(skeleton, problem, settings, pose, ws);
@@ -326,7 +323,7 @@ Result<TreeIkResult> solve_dls_tree(const Skeleton& skeleton, const TreeIkProble
       bool blocked_any = false;
       for (int j = 0; j < joints; ++j) {
         const auto ju = static_cast<std::size_t>(j);
-        const Quat g = parent_world_rotation(skeleton, pose, j);
+        const Quat g = detail::parent_rotation(skeleton, pose, j);
         for (unsigned k = 0; k < 2; ++k) {
           const Vec3& inward = ws.pushed_back[ju][k];
           if ((ws.blocked[ju] & (1u << k)) || inward.isZero()) continue;
@@ -344,12 +341,22 @@ Result<TreeIkResult> solve_dls_tree(const Skeleton& skeleton, const TreeIkProble
     errors = tree_ik_errors(pose, problem.effectors);
     const double after = errors.position + errors.orientation;
     stalled = std::abs(after - before) <= kStallRatio * before ? stalled + 1 : 0;
-    if (stalled >= kStallIterations && kicks < kMaxKicks && !done(errors)) {
+    if (stalled >= kStallIterations && kicks < kMaxKicks && !done(errors) &&
+        result.iterations < settings.max_iterations) {
+      if (total(errors) < best_total) {
+        best_total = total(errors);
+        std::copy(pose.local_rotations.begin(), pose.local_rotations.end(), best_rotations.begin());
+      }
       ++kicks;
       stalled = 0;
       detail::kick(skeleton, problem.limits, ws.scratch, pose);
       errors = tree_ik_errors(pose, problem.effectors);
     }
+  }
+  if (best_total < total(errors)) {
+    std::copy(best_rotations.begin(), best_rotations.end(), pose.local_rotations.begin());
+    skeleton_forward_kinematics(skeleton, pose);
+    errors = tree_ik_errors(pose, problem.effectors);
   }
   result.error = errors.position;
   result.orientation_error = errors.orientation;

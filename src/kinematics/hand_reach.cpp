@@ -1,6 +1,7 @@
 #include "animkit/kinematics/hand_reach.h"
 
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,20 @@ Result<HandReachResult> reach_hand(const Skeleton& skeleton, std::span<const Joi
   if (!limits.empty() && static_cast<int>(limits.size()) != n) {
     return fail("joint limits: " + std::to_string(limits.size()) + " given, the skeleton has " +
                 std::to_string(n) + " joints");
+  }
+  // The pose's sizes and the three joints first, in validate_tree_ik's words: everything below
+  // indexes the pose by them.
+  const std::array<Effector, 3> probe{Effector{hand, target}, Effector{feet[0], target},
+                                      Effector{feet[1], target}};
+  if (auto error = validate_tree_ik(skeleton, TreeIkProblem{probe, {}}, pose)) {
+    return fail(error->message);
+  }
+  for (int root : skeleton.roots()) {
+    const Quat& q = pose.local_rotations[static_cast<std::size_t>(root)];
+    if (!q.coeffs().allFinite() || std::abs(q.norm() - 1.0) > 1e-9) {
+      return fail("the pose's rotation of root joint " +
+                  skeleton.names()[static_cast<std::size_t>(root)] + " is not a unit quaternion");
+    }
   }
   const auto held = with_roots_at(skeleton, pose);
   if (!held) return fail(held.error().message);

@@ -19,6 +19,7 @@ bool name_has(const std::string& name, std::string_view word) {
 }  // namespace
 
 Vec3 joint_bone_direction(const Skeleton& skeleton, int joint) {
+  if (joint < 0 || joint >= skeleton.joint_count()) return Vec3::UnitY();
   for (int k = skeleton.child_begin()[joint]; k < skeleton.child_begin()[joint + 1]; ++k) {
     const Vec3& offset = skeleton.rest_offsets()[skeleton.child_list()[k]];
     if (offset.norm() > 1e-9) return offset.normalized();
@@ -49,12 +50,16 @@ std::vector<JointLimit> human_joint_limits(const Skeleton& skeleton) {
   return limits;
 }
 
-void fit_hinge_axes(const Skeleton& skeleton, const SkeletalMotion& motion,
-                    std::vector<JointLimit>& limits) {
-  assert(motion.joint_count == skeleton.joint_count());
-  assert(static_cast<int>(limits.size()) == skeleton.joint_count());
+std::optional<Error> fit_hinge_axes(const Skeleton& skeleton, const SkeletalMotion& motion,
+                                    std::vector<JointLimit>& limits) {
+  if (motion.joint_count != skeleton.joint_count() ||
+      static_cast<int>(limits.size()) != skeleton.joint_count()) {
+    return Error{"fitting hinge axes: a motion of " + std::to_string(motion.joint_count) +
+                 " joints and " + std::to_string(limits.size()) + " limits for a skeleton of " +
+                 std::to_string(skeleton.joint_count()) + " joints"};
+  }
   const int frames = motion.frame_count();
-  if (frames == 0) return;
+  if (frames == 0) return std::nullopt;
   for (int j = 0; j < skeleton.joint_count(); ++j) {
     auto* hinge = std::get_if<HingeLimit>(&limits[j]);
     if (!hinge) continue;
@@ -70,6 +75,7 @@ void fit_hinge_axes(const Skeleton& skeleton, const SkeletalMotion& motion,
     if (sum.norm() / frames < 0.05) continue;
     hinge->axis = sum.normalized();
   }
+  return std::nullopt;
 }
 
 }  // namespace animkit

@@ -6,7 +6,9 @@
 #include <limits>
 #include <string>
 
+#include "animkit/core/validation.h"
 #include "animkit/kinematics/human_limits.h"
+#include "animkit/kinematics/ik_types.h"
 #include "animkit/scene/skeleton_drawing.h"
 
 namespace animkit {
@@ -61,7 +63,7 @@ Result<BvhScene> BvhScene::create(Skeleton skeleton, SkeletalMotion motion,
   }
   if (limits.empty()) {
     limits = human_joint_limits(skeleton);
-    fit_hinge_axes(skeleton, motion, limits);
+    if (auto error = fit_hinge_axes(skeleton, motion, limits)) return fail(error->message);
   }
   if (static_cast<int>(limits.size()) != joints) {
     return fail("got " + std::to_string(limits.size()) + " joint limits for " +
@@ -153,7 +155,7 @@ void BvhScene::solve() {
       solve_tree_ik(options_.solver, skeleton_, problem, workspaces_->solvers, pose_);
   const auto stop = std::chrono::steady_clock::now();
   if (!result) {
-    // Inputs are checked by hold(); a failure here leaves the clip's pose on screen.
+    // hold() refuses what the solvers would; should one fail anyway, the clip's pose shows.
     pose_ = clip_pose_;
     last_.reset();
     return;
@@ -171,8 +173,11 @@ Result<void> BvhScene::hold(int joint, const Vec3& target) {
     return fail("joint " + skeleton_.names()[joint] +
                 " is a root: IK turns joints but never moves a root");
   }
-  if (!target.allFinite())
-    return fail("the target of " + skeleton_.names()[joint] + " is not finite");
+  // What validate_tree_ik refuses is refused here, so a held target never stops solve().
+  if (!target.allFinite() || target.cwiseAbs().maxCoeff() > kMaxTargetCoordinate) {
+    return fail("the target of " + skeleton_.names()[joint] + " " + to_string(target) +
+                " is not finite or beyond 1e9");
+  }
   auto it = std::find_if(held_.begin(), held_.end(),
                          [&](const HeldTarget& h) { return h.joint == joint; });
   if (it == held_.end()) {

@@ -12,7 +12,10 @@ PlaybackClock::PlaybackClock(int frame_count, double frame_time)
 }
 
 void PlaybackClock::advance(double seconds) {
-  if (!playing || !(seconds > 0.0) || !std::isfinite(speed)) return;
+  // Nothing to advance by unless both are finite (fmod of inf is NaN, which frame() could not
+  // turn into an index).
+  // (isfinite first: an ordered comparison with NaN raises FE_INVALID.)
+  if (!playing || !std::isfinite(seconds) || !std::isfinite(speed) || !(seconds > 0.0)) return;
   const double wrapped = std::fmod(time_ + seconds * speed, duration());
   time_ = wrapped < 0.0 ? wrapped + duration() : wrapped;
   // fmod of a value just below a multiple can round up to the duration itself.

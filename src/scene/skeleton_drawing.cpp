@@ -1,5 +1,6 @@
 #include "animkit/scene/skeleton_drawing.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -30,6 +31,7 @@ void describe_skeleton(DrawList& out, const Skeleton& skeleton, const SkeletonPo
 }
 
 std::vector<Vec3> limit_outline(const JointLimit& limit, const Vec3& bone, int samples) {
+  samples = std::max(samples, 1);  // the formulas below divide by it
   std::vector<Vec3> rim;
   if (const auto* hinge = std::get_if<HingeLimit>(&limit)) {
     for (int k = 0; k <= samples; ++k) {

@@ -226,6 +226,10 @@ TEST(Viewer, RefusesAHeldJointTheClipDoesNotHave) {
                             "dls or sdls)"),
             std::string::npos)
       << solver.err;
+  const auto frame = run_command(kViewer + " --scene bvh --frame 994 --frames 1 --capture " +
+                                 (fresh_dir("viewer_bvh_frame") / "x.png").string());
+  EXPECT_EQ(frame.exit_code, 2);
+  EXPECT_NE(frame.err.find("--frame must be in [0, 993]"), std::string::npos) << frame.err;
 }
 
 // The collider's violet (palette::collider), lit: bluer than red, red at least green, unlike

@@ -182,8 +182,6 @@ TEST_P(DlsTree, ReachesMostFarReachableTargetsFromRest) {
   EXPECT_GE(converged, trials * 70 / 100);
 }
 
-// Roots turn like every joint (tree_ik.h); this rig's pelvis gets a limit with no range, which
-// must keep it exactly as it is.
 // The same far targets through FABRIK with its DLS finish (fabrik_tree.h): the passes alone
 // reach almost none of them on this rig (hinges about z, a chest hinge about y), but the pose
 // they leave is a better start for DLS than the rest pose, so together they reach more than DLS
@@ -209,6 +207,8 @@ TEST(FabrikWithDlsFinish, ReachesMoreFarReachableTargetsFromRestThanDls) {
   EXPECT_GE(converged, trials * 90 / 100);
 }
 
+// Roots turn like every joint (tree_ik.h); this rig's pelvis gets a limit with no range, which
+// must keep it as it is (to rounding: 1e-12 rad).
 TEST_P(DlsTree, LimitsHoldOnThousandsOfRandomTargetsAndRootsAndBonesStay) {
   Rig rig = make_rig();
   rig.limits[0] = BallLimit{Vec3::UnitY(), 0.0, 0.0, 0.0};
@@ -335,7 +335,7 @@ TEST_P(DlsTree, FollowsTheCmuWalkWithHandsAndFeet) {
   for (int f = 0; f < clip->frame_count(); f += 4, ++frames) {
     bvh_frame_to_pose(*clip, f, goal);
     skeleton_forward_kinematics(*skeleton, goal);
-    for (int r : skeleton->roots()) {  // IK keeps roots where the frame puts them
+    for (int r : skeleton->roots()) {  // roots start where the frame puts them (KDL's too)
       pose.local_rotations[static_cast<std::size_t>(r)] =
           goal.local_rotations[static_cast<std::size_t>(r)];
       pose.local_translations[static_cast<std::size_t>(r)] =

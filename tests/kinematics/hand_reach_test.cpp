@@ -125,6 +125,17 @@ TEST(HandReach, BadInputIsRefused) {
   EXPECT_EQ(result.error().message, "effector 0 is on the root hips, which IK never moves");
   result = reach_hand(f.s, f.limits, f.feet[0], f.feet, Vec3(0.5, 1.5, 0), {}, pose);
   ASSERT_FALSE(result);
+  SkeletonPose empty;  // a pose that does not fit: an error, not a read out of bounds
+  result = reach_hand(f.s, f.limits, f.hand, f.feet, Vec3(0.5, 1.5, 0), {}, empty);
+  ASSERT_FALSE(result);
+  EXPECT_NE(result.error().message.find("the pose has 0"), std::string::npos)
+      << result.error().message;
+  SkeletonPose stretched = pose;
+  stretched.local_rotations[static_cast<std::size_t>(f.root)].coeffs() *= 2.0;
+  result = reach_hand(f.s, f.limits, f.hand, f.feet, Vec3(0.5, 1.5, 0), {}, stretched);
+  ASSERT_FALSE(result);
+  EXPECT_EQ(result.error().message,
+            "the pose's rotation of root joint hips is not a unit quaternion");
   HandReachSettings settings;
   settings.foot_weight = 0.0;
   EXPECT_EQ(settings.validate()->message, "foot weight must be a positive finite number, got 0");

@@ -21,7 +21,8 @@ struct Walk {
 Walk cmu_walk() {
   auto clip = read_bvh_file(ANIMKIT_TEST_DATA_DIR "/cmu/131_01.bvh", BvhReadOptions{0.056444});
   EXPECT_TRUE(clip) << (clip ? "" : clip.error().message);
-  return {build_skeleton(clip->skeleton).value(), motion_from_bvh(*clip)};
+  // value() throws without the clip, which fails the test (never a read of an empty result).
+  return {build_skeleton(clip.value().skeleton).value(), motion_from_bvh(clip.value())};
 }
 
 TEST(HumanLimits, KneesAndElbowsAreHingesRootsFreeTheRestBalls) {
@@ -86,7 +87,7 @@ TEST(HumanLimits, FittingFindsTheAxisAClipBendsAHingeAbout) {
   for (int f = 0; f < 6; ++f) {
     m.local_rotations[f * 3 + 1] = Quat(Eigen::AngleAxisd(-0.2 - 0.2 * f, tilted));
   }
-  fit_hinge_axes(s, m, limits);
+  EXPECT_FALSE(fit_hinge_axes(s, m, limits));
   const auto& fitted = std::get<HingeLimit>(limits[1]);
   EXPECT_LE((fitted.axis - tilted).norm(), 1e-12);
   for (int f = 0; f < 6; ++f) {
@@ -94,7 +95,13 @@ TEST(HumanLimits, FittingFindsTheAxisAClipBendsAHingeAbout) {
   }
   // A clip that never bends it leaves the axis alone.
   auto still = human_joint_limits(s);
-  fit_hinge_axes(s, make_motion(3, 4, 0.1), still);
+  EXPECT_FALSE(fit_hinge_axes(s, make_motion(3, 4, 0.1), still));
+  EXPECT_EQ(std::get<HingeLimit>(still[1]).axis, start);
+  // A motion of another skeleton is refused, the limits left as they were.
+  const auto error = fit_hinge_axes(s, make_motion(2, 4, 0.1), still);
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->message,
+            "fitting hinge axes: a motion of 2 joints and 3 limits for a skeleton of 3 joints");
   EXPECT_EQ(std::get<HingeLimit>(still[1]).axis, start);
 }
 
@@ -104,7 +111,7 @@ TEST(HumanLimits, TheCapturedWalkStaysNearlyInsideOnceTheHingesAreFitted) {
   const Walk walk = cmu_walk();
   const Skeleton& s = walk.skeleton;
   auto limits = human_joint_limits(s);
-  fit_hinge_axes(s, walk.motion, limits);
+  ASSERT_FALSE(fit_hinge_axes(s, walk.motion, limits));
   SkeletonPose pose = skeleton_rest_pose(s);
   std::vector<double> worst(s.joint_count(), 0.0);
   for (int f = 0; f < walk.motion.frame_count(); ++f) {

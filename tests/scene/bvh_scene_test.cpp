@@ -24,14 +24,15 @@ Walk cmu_walk() {
   const std::filesystem::path path = ANIMKIT_TEST_DATA_DIR "/cmu/131_01.bvh";
   auto clip = read_bvh_file(path, BvhReadOptions{kCmuScale});
   EXPECT_TRUE(clip) << (clip ? "" : clip.error().message);
-  return {build_skeleton(clip->skeleton).value(), motion_from_bvh(*clip)};
+  // value() throws without the clip, which fails the test (never a read of an empty result).
+  return {build_skeleton(clip.value().skeleton).value(), motion_from_bvh(clip.value())};
 }
 
 BvhScene walk_scene(const BvhSceneOptions& options = {}) {
   Walk walk = cmu_walk();
   auto scene = BvhScene::create(std::move(walk.skeleton), std::move(walk.motion), {}, options);
   EXPECT_TRUE(scene) << (scene ? "" : scene.error().message);
-  return std::move(*scene);
+  return std::move(scene.value());
 }
 
 // FK by hand: each joint's world transform composed from the root down, independently of
@@ -122,7 +123,11 @@ TEST(BvhScene, HoldingRefusesRootsBadJointsAndNonFiniteTargets) {
   EXPECT_EQ(out_of_range.error().message, "no joint 99 (the skeleton has 38)");
   auto nan = scene.hold(3, Vec3(0, std::nan(""), 0));
   ASSERT_FALSE(nan);
-  EXPECT_EQ(nan.error().message, "the target of LeftKnee is not finite");
+  EXPECT_EQ(nan.error().message, "the target of LeftKnee (0, nan, 0) is not finite or beyond 1e9");
+  auto far = scene.hold(3, Vec3(2e9, 0, 0));  // solve() would refuse it on every frame
+  ASSERT_FALSE(far);
+  EXPECT_EQ(far.error().message,
+            "the target of LeftKnee (2e+09, 0, 0) is not finite or beyond 1e9");
   EXPECT_TRUE(scene.held().empty());
 }
 

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 namespace animkit {
 namespace {
 
@@ -33,6 +36,18 @@ TEST(PlaybackClock, LoopsAtTheEndBothWays) {
   EXPECT_EQ(clock.frame(), 8);
   EXPECT_GE(clock.time(), 0.0);
   EXPECT_LT(clock.time(), clock.duration());
+}
+
+TEST(PlaybackClock, NonFiniteStepsAndSpeedsLeaveItWhereItIs) {
+  PlaybackClock clock(10, 0.1);
+  clock.seek(3);
+  const double before = clock.time();
+  clock.advance(std::numeric_limits<double>::infinity());
+  clock.advance(std::nan(""));
+  clock.speed = std::numeric_limits<double>::infinity();
+  clock.advance(0.1);
+  EXPECT_EQ(clock.time(), before);
+  EXPECT_EQ(clock.frame(), 3);
 }
 
 TEST(PlaybackClock, SeekClampsToTheClip) {

@@ -25,7 +25,9 @@ class SymmetricEigen {
   Eigen::VectorXd scratch_;      // what Eigen would allocate to form Q
   Eigen::VectorXd diagonal_;     // T's diagonal
   Eigen::VectorXd subdiagonal_;  // T's subdiagonal
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> tridiagonal_;  // T = Z diag(lambda) Z^T
+  // T = Z diag(lambda) Z^T. Computed once at construction so that a fresh SymmetricEigen can be
+  // copied or moved (a solver that never computed holds an uninitialized status).
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> tridiagonal_{Eigen::MatrixXd::Identity(1, 1)};
   Eigen::VectorXd eigenvalues_;
   Eigen::MatrixXd eigenvectors_;  // U = Q Z
 };

@@ -64,7 +64,9 @@ struct DlsWorkspace {
   Eigen::MatrixXd jacobian;  ///< rows: weighted effector errors; columns: 3 per joint (world)
   Eigen::VectorXd error;     ///< weighted effector errors (positions, then orientations)
   Eigen::MatrixXd jjt;       ///< J J^T (+ lambda^2 I for DLS)
-  Eigen::LLT<Eigen::MatrixXd> llt;
+  /// Computed once at construction (on a 1 x 1 identity) so that a fresh workspace can be copied
+  /// or moved: a decomposition that never computed holds an uninitialized status.
+  Eigen::LLT<Eigen::MatrixXd> llt{Eigen::MatrixXd::Identity(1, 1)};
   SymmetricEigen eigen;          ///< SDLS: J J^T = U S^2 U^T
   Eigen::MatrixXd jtu;           ///< SDLS: J^T U (columns sigma_i v_i)
   Eigen::VectorXd solve;         ///< (J J^T + lambda^2 I)^-1 e

@@ -1,8 +1,8 @@
 #pragma once
 // A character reaches a hand to a target while both feet stay planted (issue 12's `animkit
 // reach`): one tree IK solve with three effectors, the hand at the target and each foot pinned
-// where it stands, the root held where and how it is (a zero-range limit: roots never
-// translate, and this keeps FABRIK and CCD from turning it either), the other joints within
+// where it stands, the root held where and how it is (roots never translate, and a
+// zero-range limit keeps every solver from turning it), the other joints within
 // their limits. Which joints move is the solver's choice among those between the root and the
 // effectors: with the root fixed, the spine and the arm reach, and the legs keep the feet.
 #include <array>
@@ -46,9 +46,10 @@ struct HandReachResult {
 /// reached pose is the solver's best even when the target is out of reach (ik.reachable false) or
 /// the limits stop the hand short (reached false). Errors: a bad joint index (hand or feet not
 /// distinct, a root), a non-finite target, a limits span of the wrong size, bad settings; the
-/// pose is then untouched. A one-off call: it builds a copy of the skeleton (the roots' rest
-/// rotations set to the pose's) and the solvers' workspaces, so it allocates; FABRIK may move
-/// the feet (see foot_drift; README "animkit reach"), DLS (the default) holds them.
+/// pose is then untouched; so is a pose that does not fit the skeleton or whose root rotation
+/// is not a unit quaternion. A one-off call: it builds a copy of the skeleton (the roots' rest
+/// rotations set to the pose's) and the solvers' workspaces, so it allocates. foot_drift says
+/// how far the feet gave (the tests hold them to the tolerance with every solver).
 Result<HandReachResult> reach_hand(const Skeleton& skeleton, std::span<const JointLimit> limits,
                                    int hand, std::array<int, 2> feet, const Vec3& target,
                                    const HandReachSettings& settings, SkeletonPose& pose);

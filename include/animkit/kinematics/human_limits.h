@@ -4,8 +4,10 @@
 // that bend one way, every other joint below the root a ball with a wide cone and a twist
 // range. Rough anatomy, not a medical model: enough to show what limits do and to keep a
 // dragged limb from bending backwards.
+#include <optional>
 #include <vector>
 
+#include "animkit/core/result.h"
 #include "animkit/kinematics/joint_limits.h"
 #include "animkit/kinematics/skeletal_motion.h"
 #include "animkit/kinematics/skeleton.h"
@@ -21,7 +23,8 @@ inline constexpr double kHumanBallSwing = 2.0943951023931957;
 inline constexpr double kHumanBallTwist = 1.5707963267948966;
 
 /// The joint's bone direction in its own frame (unit): toward its first child that is not on
-/// top of it, else +y (a leaf). What a ball limit's twist axis follows.
+/// top of it, else +y (a leaf, or a joint index out of range). What a ball limit's twist axis
+/// follows.
 Vec3 joint_bone_direction(const Skeleton& skeleton, int joint);
 
 /// One limit per joint: roots free; a joint whose name contains "knee" (any case) a hinge
@@ -37,8 +40,10 @@ std::vector<JointLimit> human_joint_limits(const Skeleton& skeleton);
 /// axis, so the flexion keeps its sign). A captured elbow does not bend about the axis a
 /// skeleton's rest pose suggests (CMU's are 30 degrees off, a carrying angle); a hinge about
 /// the wrong axis would refuse most of the clip. Hinges the clip barely bends (a mean turn
-/// under 0.05 rad) keep their axis. `motion` must fit `skeleton` (asserted).
-void fit_hinge_axes(const Skeleton& skeleton, const SkeletalMotion& motion,
-                    std::vector<JointLimit>& limits);
+/// under 0.05 rad) keep their axis. An error (limits untouched) when `motion` or `limits` does
+/// not fit `skeleton`.
+[[nodiscard]] std::optional<Error> fit_hinge_axes(const Skeleton& skeleton,
+                                                  const SkeletalMotion& motion,
+                                                  std::vector<JointLimit>& limits);
 
 }  // namespace animkit

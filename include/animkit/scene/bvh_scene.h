@@ -136,8 +136,8 @@ class BvhScene {
   Eigen::AlignedBox3d focus_bounds() const { return bounds_; }
 
  private:
-  // The tree solvers' workspaces, on the heap: a never-used Eigen decomposition in the DLS
-  // workspace must not be moved with the scene (moving it reads its uninitialized status).
+  // The tree solvers' settings and workspaces, behind a pointer so this header needs none of
+  // the solvers' types.
   struct SolverWorkspaces;
 
   BvhScene();

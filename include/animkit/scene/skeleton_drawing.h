@@ -34,7 +34,8 @@ void describe_joint_limit(DrawList& out, const Skeleton& skeleton, const Skeleto
                           int joint, const JointLimit& limit, double radius);
 
 /// The points of the rim drawn for `limit` (hinge: the arc; ball: the cone's rim), as unit
-/// bone directions in the joint's rest frame; `samples` + 1 points. Empty for a free joint.
+/// bone directions in the joint's rest frame; `samples` + 1 points (samples below 1 count as
+/// 1). Empty for a free joint.
 std::vector<Vec3> limit_outline(const JointLimit& limit, const Vec3& bone, int samples);
 
 }  // namespace animkit
