@@ -1,11 +1,10 @@
 #include "animkit/kinematics/drawing_session.h"
 
 #include <algorithm>
-#include <chrono>
 #include <string>
 
-#include "animkit/core/quaternion_math.h"
 #include "animkit/core/validation.h"
+#include "drawing_loop.h"
 
 namespace animkit {
 
@@ -58,35 +57,15 @@ Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets
     return fail(error->message);
   }
 
-  const Pose rest = rest_pose(chain);
   DrawingRun run;
-  run.frames.reserve(targets.size() * static_cast<std::size_t>(options.laps));
-  Pose pose = rest;
-  Pose previous = rest;
-  for (int lap = 0; lap < options.laps; ++lap) {
-    for (std::size_t t = 0; t < targets.size(); ++t) {
-      // The lab resets the arm to rest when a shape starts over; cold start does so every frame.
-      if (t == 0 || !options.warm_start) pose = rest;
-      const auto start = std::chrono::steady_clock::now();
-      auto solved = solve_ik(options.solver, chain, pose, targets[t], options.ik);
-      const auto stop = std::chrono::steady_clock::now();
-      if (!solved) return fail(solved.error().message);
-
-      DrawingFrame frame;
-      frame.lap = lap;
-      frame.target = targets[t];
-      frame.pen_down = pen_down.empty() || pen_down[t] != 0;
-      frame.end_effector = pose.end_effector();
-      frame.ik = *solved;
-      frame.joint_step_rad =
-          t == 0 ? 0.0 : largest_rotation_change(previous.local_rotations, pose.local_rotations);
-      frame.solve_time_us = std::chrono::duration<double, std::micro>(stop - start).count();
-      frame.joint_positions = pose.global_positions;
-      run.frames.push_back(std::move(frame));
-      previous = pose;
-    }
-  }
-  run.final_pose = pose;
+  auto final_pose = detail::run_drawing_frames(
+      targets, options.laps, options.warm_start, pen_down, rest_pose(chain),
+      [&](Pose& pose, const Vec3& target) {
+        return solve_ik(options.solver, chain, pose, target, options.ik);
+      },
+      [](const Pose& pose) { return pose.end_effector(); }, run);
+  if (!final_pose) return fail(final_pose.error().message);
+  run.final_pose = std::move(*final_pose);
   return run;
 }
 
