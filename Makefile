@@ -42,7 +42,7 @@ test-release: deps test-deps
 test-sanitize: deps
 	$(CMAKE) -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
 	  -DANIMKIT_SANITIZE=ON \
-	  -DANIMKIT_BUILD_BENCHMARKS=OFF
+	  -DANIMKIT_BUILD_BENCHMARKS=OFF -DANIMKIT_BUILD_PYTHON=OFF
 	$(CMAKE) --build $(SANITIZE_DIR) -j $(JOBS)
 	# A failing test gets a second run: LeakSanitizer's exit-time tracer has crashed once (signal
 	# 11 inside the sanitizer, with Mesa loaded) on a passing test. A real failure fails twice.
@@ -63,7 +63,7 @@ fuzz-deps:
 fuzz: deps fuzz-deps
 	$(CMAKE) -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++-16 \
 	  -DANIMKIT_BUILD_FUZZERS=ON -DANIMKIT_BUILD_TESTS=OFF -DANIMKIT_BUILD_CLI=OFF \
-	  -DANIMKIT_BUILD_VIEWER=OFF -DANIMKIT_BUILD_BENCHMARKS=OFF
+	  -DANIMKIT_BUILD_VIEWER=OFF -DANIMKIT_BUILD_BENCHMARKS=OFF -DANIMKIT_BUILD_PYTHON=OFF
 	$(CMAKE) --build $(FUZZ_DIR) -j $(JOBS)
 	bash scripts/run-fuzzers.sh $(FUZZ_DIR) $(FUZZ_SECONDS)
 

@@ -29,11 +29,15 @@ packages=(
   libcgal-dev libbullet-dev
   # Tree IK benchmark only: Orocos KDL's tree solvers are its point of comparison (issue 12).
   liborocos-kdl-dev
+  # The Python module (python/): pybind11 and Debian's Python 3.11 with numpy, which Blender
+  # 3.4 runs too.
+  pybind11-dev python3-dev python3-numpy
 )
 if [ "${1:-}" = "--tests" ]; then
   # The tests only: Blender (Debian's 3.4, the version the README's Blender steps use) opens the
-  # BVH files animkit writes and compares them with what animkit computed.
-  packages=(blender)
+  # BVH files animkit writes and compares them with what animkit computed, and runs the add-on
+  # headless; pytest runs the Python module's tests, matplotlib the examples' plots.
+  packages=(blender python3-pytest python3-matplotlib)
 fi
 if [ "${1:-}" = "--fuzz" ]; then
   # libomp: clang's OpenMP runtime, for the cloth solvers' threads in the fuzz build.
