@@ -1,5 +1,6 @@
 # The two commands of the README:
-#   make demo   installs dependencies, builds (Release) and runs the built-in demo
+#   make demo   installs dependencies, builds (Release; the CLI and the Python module) and runs
+#               the built-in demo
 #   make test   installs dependencies, builds and runs every test, then again under ASan+UBSan
 #               (a Debug build at -O1, so assertions are checked too)
 #   make fuzz   builds the libFuzzer targets with clang 16 and runs each FUZZ_SECONDS (60)
@@ -22,7 +23,7 @@ build: deps
 
 demo: deps
 	$(CMAKE) -S . -B $(RELEASE_DIR) -DCMAKE_BUILD_TYPE=Release
-	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target animkit-cli
+	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target animkit-cli animkit_python
 	$(RELEASE_DIR)/apps/cli/animkit demo --out $(OUT)
 
 # Opens animkit-viewer in a window (needs a display; see the README for --capture without one).
