@@ -162,7 +162,10 @@ def main():
     from animkit import _animkit
 
     out = '"""Type stubs of animkit, generated from the built module by tools/generate_stubs.py."""\n'
-    out += "import typing\n\nimport numpy\n\n__version__: str\n\n"
+    # The names pybind11's signatures use (typing's generics, os.PathLike for paths).
+    out += "import os\nimport typing\nfrom typing import (Any, Callable, Dict, Iterable, Iterator, List,\n"
+    out += "                    Optional, Sequence, Set, Tuple, Union)\n\nimport numpy\n\n"
+    out += "__version__: str\n\n"
     for name in sorted(animkit.__all__):
         value = getattr(_animkit, name)
         if inspect.isclass(value):
