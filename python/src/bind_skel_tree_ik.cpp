@@ -55,7 +55,8 @@ struct PyTreeIkSolver {
 std::string solver_names() {
   std::string names;
   for (TreeIkSolverKind kind : all_tree_ik_solvers()) {
-    names += (names.empty() ? "" : ", ") + std::string(to_string(kind));
+    if (!names.empty()) names += ", ";
+    names += to_string(kind);
   }
   return names;
 }

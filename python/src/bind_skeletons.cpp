@@ -20,7 +20,8 @@ constexpr double kUnitTolerance = 1e-6;  // the library's, for unit quaternions
 std::string repr_list(const std::vector<int>& values) {
   std::string text = "[";
   for (std::size_t i = 0; i < values.size(); ++i) {
-    text += (i ? ", " : "") + std::to_string(values[i]);
+    if (i) text += ", ";
+    text += std::to_string(values[i]);
   }
   return text + "]";
 }
@@ -41,7 +42,8 @@ DoubleArray clip_array(const py::object& value, std::string_view what, py::ssize
   if (array.ndim() != 3 || array.shape(2) != columns) {
     std::string shape = "(";
     for (py::ssize_t d = 0; d < array.ndim(); ++d) {
-      shape += (d ? ", " : "") + std::to_string(array.shape(d));
+      if (d) shape += ", ";
+      shape += std::to_string(array.shape(d));
     }
     shape += array.ndim() == 1 ? ",)" : ")";
     raise(std::string(what) + " must be an array of shape (frames, joints, " +
