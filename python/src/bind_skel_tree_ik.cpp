@@ -50,6 +50,9 @@ struct PyTreeIkSolver {
   TreeIkSolvers solvers;
   std::vector<Effector> effectors;  // reused between solves
   std::vector<JointLimit> limits;
+  /// Set while a solve runs without the GIL: a second thread's solve on the same object (which
+  /// would share the workspaces) is refused instead. Read and written with the GIL held only.
+  bool busy = false;
 };
 
 std::string solver_names() {
@@ -70,7 +73,7 @@ TreeIkSolverKind solver_kind(const std::string& name) {
 
 PyTreeIkSolver make_solver(const Skeleton& skeleton, const std::string& solver,
                            const SolverOptions& o) {
-  PyTreeIkSolver s{skeleton, solver_kind(solver), {}, {}, {}};
+  PyTreeIkSolver s{skeleton, solver_kind(solver), {}, {}, {}, false};
   s.solvers.set_stopping(o.max_iterations, o.tolerance);
   if (o.angular_tolerance) {
     s.solvers.fabrik.angular_tolerance = s.solvers.ccd.angular_tolerance =
@@ -92,6 +95,16 @@ PyTreeIkSolver make_solver(const Skeleton& skeleton, const std::string& solver,
 
 PyTreeIkResult solve(PyTreeIkSolver& s, const SkeletonPose* pose, const py::object& effectors,
                      const py::object& limits) {
+  if (s.busy) {
+    raise(
+        "this TreeIkSolver is already solving in another thread (its workspaces are not "
+        "shared): give each thread its own solver");
+  }
+  s.busy = true;
+  struct Release {
+    bool& busy;
+    ~Release() { busy = false; }
+  } release_busy{s.busy};
   s.effectors.clear();
   auto add = [&](const py::object& item, std::size_t i) {
     if (!py::isinstance<PyEffector>(item)) {

@@ -304,3 +304,35 @@ def test_bad_input(skeleton, limits):
         animkit.Effector(1.5, target)
     with pytest.raises(animkit.Error, match="effector position must be 3 numbers"):
         animkit.Effector("Head", (1, 2))
+
+
+def test_threads(skeleton, walk, limits):
+    """Each thread's own solver gives the same bits as one solve; one solver shared by two
+    threads refuses the second solve while the first runs instead of sharing its workspaces."""
+    import threading
+    effectors = effectors_of(skeleton, captured_pose(walk, 300))
+    expected = animkit.solve_tree(skeleton, effectors, solver="fabrik", limits=limits)
+    shared = animkit.TreeIkSolver(skeleton, "fabrik")
+    outcomes = []
+
+    def run(solver):
+        for _ in range(5):
+            try:
+                outcomes.append(solver.solve(None, effectors, limits).pose.local_rotations)
+            except animkit.Error as error:
+                outcomes.append(str(error))
+
+    threads = [threading.Thread(target=run, args=(animkit.TreeIkSolver(skeleton, "fabrik"),))
+               for _ in range(2)]
+    threads += [threading.Thread(target=run, args=(shared,)) for _ in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert len(outcomes) == 20
+    for outcome in outcomes:
+        if isinstance(outcome, str):
+            assert "already solving in another thread" in outcome
+        else:
+            np.testing.assert_array_equal(outcome, expected.pose.local_rotations)
+    assert sum(not isinstance(o, str) for o in outcomes) >= 10
