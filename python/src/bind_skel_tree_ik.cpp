@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "animkit/kinematics/tree_ik_solver.h"
+#include "animkit/kinematics/two_bone_ik.h"
 #include "numpy_convert.h"
 #include "python_errors.h"
 #include "skel_bindings.h"
@@ -296,6 +297,48 @@ void bind_skel_tree_ik(py::module_& m) {
       py::arg("solver") = "fabrik", py::arg("limits") = py::none(), py::kw_only(),
       SOLVER_OPTION_ARGS,
       "One tree IK solve: TreeIkSolver(skeleton, solver, ...).solve(pose, effectors, limits).");
+  py::class_<TwoBoneResult>(m, "TwoBoneResult",
+                            "What solve_two_bone found: the two world rotations to apply and "
+                            "where the middle and end joints go.")
+      .def_property_readonly(
+          "upper_rotation", [](const TwoBoneResult& r) { return quat_to_array(r.upper_rotation); },
+          "(4,) world rotation of the upper bone about the root (w, x, y, z).")
+      .def_property_readonly(
+          "lower_rotation", [](const TwoBoneResult& r) { return quat_to_array(r.lower_rotation); },
+          "(4,) world rotation taking the old lower bone to the new one (w, x, y, z).")
+      .def_property_readonly(
+          "middle", [](const TwoBoneResult& r) { return vec3_to_array(r.middle); },
+          "(3,) new world position of the middle joint.")
+      .def_property_readonly(
+          "end", [](const TwoBoneResult& r) { return vec3_to_array(r.end); },
+          "(3,) new world position of the end joint.")
+      .def_readonly("reached", &TwoBoneResult::reached, "Whether the end reaches the target.")
+      .def_readonly("error", &TwoBoneResult::error, "|end - target| (scene units).")
+      .def("__repr__", [](const TwoBoneResult& r) {
+        return std::string("TwoBoneResult(reached=") + (r.reached ? "True" : "False") +
+               ", error=" + num(r.error) + ")";
+      });
+
+  m.def(
+      "solve_two_bone",
+      [](const py::object& root, const py::object& middle, const py::object& end,
+         const py::object& target, const py::object& pole, double degenerate_length) {
+        TwoBoneInput input;
+        input.root = to_vec3(root, "root");
+        input.middle = to_vec3(middle, "middle");
+        input.end = to_vec3(end, "end");
+        input.target = to_vec3(target, "target");
+        input.pole = to_vec3(pole, "pole");
+        TwoBoneSettings settings;
+        settings.degenerate_length = degenerate_length;
+        return unwrap(solve_two_bone(input, settings));
+      },
+      py::arg("root"), py::arg("middle"), py::arg("end"), py::arg("target"), py::arg("pole"),
+      py::arg("degenerate_length") = TwoBoneSettings{}.degenerate_length,
+      "The analytic two-bone solver (hip-knee-ankle, shoulder-elbow-wrist): world positions "
+      "of the limb's three joints, the target for the end and a pole the middle joint bends "
+      "toward (scene units). Raises animkit.Error naming the problem for degenerate bones, "
+      "non-finite input or a bad degenerate_length.");
   m.def(
       "tree_ik_solver_names",
       [] {

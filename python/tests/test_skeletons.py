@@ -55,7 +55,7 @@ def test_tree_with_two_branches_and_rest_rotations():
     ((["a"], [-1], [[0, 0]]), "rest_offsets must be an array of shape (n, 3)"),
 ])
 def test_bad_skeletons_raise_the_library_message(args, message):
-    with pytest.raises(animkit.Error, match=None) as info:
+    with pytest.raises(animkit.Error) as info:
         animkit.Skeleton(*args)
     assert message in str(info.value)
 

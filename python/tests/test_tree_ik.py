@@ -1,6 +1,7 @@
 """Joint limits and IK on skeleton trees from Python: every solver on the CMU skeleton, with and
 without limits, and the limits' own math."""
 import math
+import threading
 
 import numpy as np
 import pytest
@@ -309,7 +310,6 @@ def test_bad_input(skeleton, limits):
 def test_threads(skeleton, walk, limits):
     """Each thread's own solver gives the same bits as one solve; one solver shared by two
     threads refuses the second solve while the first runs instead of sharing its workspaces."""
-    import threading
     effectors = effectors_of(skeleton, captured_pose(walk, 300))
     expected = animkit.solve_tree(skeleton, effectors, solver="fabrik", limits=limits)
     shared = animkit.TreeIkSolver(skeleton, "fabrik")
@@ -336,3 +336,24 @@ def test_threads(skeleton, walk, limits):
         else:
             np.testing.assert_array_equal(outcome, expected.pose.local_rotations)
     assert sum(not isinstance(o, str) for o in outcomes) >= 10
+
+
+def test_two_bone():
+    # Upper bone 1 along +x, lower bone 1 further along +x; target at distance sqrt(2) along
+    # the diagonal: a right angle at the middle joint, which bends toward the pole (+y).
+    r = animkit.solve_two_bone((0, 0, 0), (1, 0, 0), (2, 0, 0), (1, 1, 0), (0.5, 5, 0))
+    assert r.reached and r.error < 1e-12
+    np.testing.assert_allclose(r.end, [1, 1, 0], atol=1e-12)
+    assert np.linalg.norm(r.middle) == pytest.approx(1.0)
+    assert r.middle[1] > 0  # on the pole's side
+    np.testing.assert_allclose(np.linalg.norm(r.upper_rotation), 1.0)
+    assert repr(r).startswith("TwoBoneResult(reached=True, error=")
+    far = animkit.solve_two_bone((0, 0, 0), (1, 0, 0), (2, 0, 0), (5, 0, 0), (0, 1, 0))
+    assert not far.reached and far.error == pytest.approx(3.0)
+    with pytest.raises(animkit.Error, match="zero length"):
+        animkit.solve_two_bone((0, 0, 0), (0, 0, 0), (2, 0, 0), (1, 1, 0), (0, 1, 0))
+    with pytest.raises(animkit.Error):
+        animkit.solve_two_bone((0, 0, 0), (1, 0, 0), (2, 0, 0), (math.nan, 1, 0), (0, 1, 0))
+    with pytest.raises(animkit.Error):
+        animkit.solve_two_bone((0, 0, 0), (1, 0, 0), (2, 0, 0), (1, 1, 0), (0, 1, 0),
+                               degenerate_length=-1.0)
