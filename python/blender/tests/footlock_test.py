@@ -1,0 +1,113 @@
+"""blender.footlock: the foot-lock operator on the CMU walk pins the feet as the CLI does.
+
+    blender -b --factory-startup --python-exit-code 1 --python footlock_test.py -- \
+        PYTHON_DIR DATA_DIR ANIMKIT_CLI OUT_DIR
+
+Imports data/cmu/131_01.bvh with io_anim_bvh in metres (global scale 0.056444, the CLI's
+--scale for CMU files; the scene's fps becomes the file's 120), runs `animkit footlock` on the
+same file, and runs the operator. Sliding is measured in Blender from the world heads of the
+ankle bones, before and after (the baked action), over the contact spans animkit finds: the
+mean horizontal motion per frame of a planted ankle (cm), as the library's metrics define it.
+Before must equal the CLI's before; after/before must be close to the CLI's ratio and well
+below 1.
+"""
+import json
+import pathlib
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+
+import bpy  # noqa: E402
+import numpy as np  # noqa: E402
+
+import blender_test_support as support  # noqa: E402
+from blender_test_support import check  # noqa: E402
+
+CMU_SCALE = 0.056444
+ANKLES = ("LeftAnkle", "RightAnkle")
+
+
+def sliding_cm(ankle_heads, contacts):
+    """Mean and max horizontal (Blender XY) motion per frame of the ankles inside contact
+    spans, cm. ankle_heads: (frames, 2, 3) world, metres; contacts: (left, right) spans
+    lists of (first, last, lock) with frames counted from 0."""
+    steps = []
+    for leg, spans in enumerate(contacts):
+        for first, last, _ in spans:
+            xy = ankle_heads[first:last + 1, leg, :2]
+            steps.extend(np.linalg.norm(np.diff(xy, axis=0), axis=1) * 100.0)
+    steps = np.array(steps)
+    return float(steps.mean()), float(steps.max()), len(steps)
+
+
+def ankle_heads(armature, frames):
+    scene = bpy.context.scene
+    out = np.empty((len(frames), 2, 3))
+    for k, frame in enumerate(frames):
+        scene.frame_set(frame)
+        for leg, name in enumerate(ANKLES):
+            out[k, leg] = armature.matrix_world @ armature.pose.bones[name].head
+    return out
+
+
+def main():
+    python_dir, data_dir, cli, out_dir = support.arguments(
+        4, "PYTHON_DIR DATA_DIR ANIMKIT_CLI OUT_DIR")
+    bvh = pathlib.Path(data_dir) / "cmu" / "131_01.bvh"
+    out = pathlib.Path(out_dir)
+    animkit, _ = support.load_addon(python_dir)
+    from animkit_blender import footlock_operator
+
+    run = subprocess.run([cli, "footlock", "--in", str(bvh), "--scale", str(CMU_SCALE),
+                          "--out", str(out / "cli")], capture_output=True, text=True)
+    print(run.stdout.strip())
+    check(run.returncode == 0, f"animkit footlock failed: {run.stderr.strip()}")
+    metrics = json.loads((out / "cli" / "metrics.json").read_text())
+    cli_metrics = metrics.get("metrics", metrics)
+    cli_before = cli_metrics["slide_before_mean_cm"]
+    cli_after = cli_metrics["slide_after_mean_cm"]
+
+    # The spans the library finds on the file (the CLI's), to measure Blender's sliding over.
+    clip = animkit.read_bvh(str(bvh), scale=CMU_SCALE)
+    reference = animkit.lock_feet(clip.skeleton, clip.motion)
+    spans = tuple(c.spans for c in reference.contacts)
+    check(abs(reference.metrics.slide_before_mean_cm - cli_before) < 1e-6,
+          "the module and the CLI disagree on the clip's sliding")
+
+    support.empty_scene()
+    armature = support.import_bvh(bvh, CMU_SCALE)
+    check(bpy.context.scene.render.fps == 120, f"scene fps {bpy.context.scene.render.fps}")
+    frames = footlock_operator.action_frames(armature.animation_data.action)
+    check(len(frames) == clip.motion.frame_count, f"{len(frames)} frames in Blender")
+    before = sliding_cm(ankle_heads(armature, frames), spans)
+
+    support.make_active(armature)
+    started = time.perf_counter()
+    result = bpy.ops.animkit.lock_feet()
+    seconds = time.perf_counter() - started
+    check(result == {"FINISHED"}, f"lock_feet returned {result}")
+    keyed = sorted({c.group.name for c in armature.animation_data.action.fcurves
+                    if c.data_path.endswith("rotation_quaternion")})
+    print(f"operator: {seconds:.2f} s; bones keyed as quaternions: {keyed}")
+    for name in ("LeftHip", "LeftKnee", "RightHip", "RightKnee"):
+        check(name in keyed, f"{name} was not keyed")
+    after = sliding_cm(ankle_heads(armature, frames), spans)
+
+    ratio_blender = after[0] / before[0]
+    ratio_cli = cli_after / cli_before
+    print(f"Blender: sliding {before[0]:.4f} -> {after[0]:.4f} cm/frame over {before[2]} "
+          f"planted steps (max {before[1]:.3f} -> {after[1]:.3f}), ratio {ratio_blender:.4f}")
+    print(f"CLI:     sliding {cli_before:.4f} -> {cli_after:.4f} cm/frame, ratio "
+          f"{ratio_cli:.4f}")
+    check(abs(before[0] - cli_before) < 1e-3 * cli_before,
+          f"Blender measures {before[0]:.5f} cm/frame before, the CLI {cli_before:.5f}")
+    check(after[0] < 0.3 * before[0],
+          f"the lock barely reduced the sliding: {before[0]:.4f} -> {after[0]:.4f} cm/frame")
+    check(abs(ratio_blender - ratio_cli) < 0.02 + 0.05 * ratio_cli,
+          f"after/before in Blender {ratio_blender:.4f}, in the CLI {ratio_cli:.4f}")
+    print("footlock_test: OK")
+
+
+main()
