@@ -25,33 +25,92 @@ class ClothSetupError(ValueError):
     """Something in the Blender scene the cloth operator cannot use."""
 
 
-def collider_for(animkit, obj, depsgraph, friction, report=None):
-    """An animkit Collider for a Blender mesh object (its evaluated mesh, world space):
-    a sphere, a box or a triangle mesh."""
+def collider_for(animkit, obj, depsgraph, friction, matrices=None, frame_dt=1.0 / 24.0):
+    """An animkit Collider for a Blender mesh object (its evaluated mesh, world space, now):
+    a sphere, a box or a triangle mesh, and its kind ("sphere", "box", "mesh"). `matrices`:
+    the object's world matrices (4x4) at each frame of the run, the first one now; when they
+    change, the collider is keyframed (one key per frame, `frame_dt` s apart) with the object's
+    rigid motion. Raises ClothSetupError for a mesh without faces or a motion that scales."""
     evaluated, mesh = mesh_data.evaluated_mesh(obj, depsgraph)
     try:
         world = mesh_data.to_world(evaluated.matrix_world, mesh_data.local_vertices(mesh))
         tris = mesh_data.triangles(mesh)
     finally:
         evaluated.to_mesh_clear()
+    motion = rigid_motion(obj.name, matrices)
+
+    def keyframes(centre, frame):
+        """Per-frame (time, position, rotation) in animkit's axes of the collider's local
+        frame, whose origin is `centre` and whose axes are the columns of `frame` (both in
+        Blender's world at the first frame), carried by the object's motion."""
+        if motion is None:
+            return None
+        keys = []
+        for k, (r, t) in enumerate(motion):
+            position = axes.points_to_animkit(r @ centre + t)
+            turned = axes.matrices_to_quaternions(axes.BLENDER_TO_ANIMKIT @ r @ frame)
+            keys.append((k * frame_dt, tuple(position), tuple(turned)))
+        return keys
+
     sphere = colliders.detect_sphere(world)
     if sphere is not None:
         centre, radius = sphere
         inflated = radius / colliders.icosphere_inradius_ratio(SPHERE_TESSELLATION)
         return animkit.Collider.sphere(
             obj.name, inflated, position=tuple(axes.points_to_animkit(centre)),
-            friction=friction, tessellation=SPHERE_TESSELLATION), "sphere"
+            keyframes=keyframes(centre, axes.ANIMKIT_TO_BLENDER), friction=friction,
+            tessellation=SPHERE_TESSELLATION), "sphere"
     box = colliders.detect_box(world)
     if box is not None:
         centre, half, rotation = box
-        quaternion = axes.matrices_to_quaternions(axes.rotations_to_animkit(rotation))
+        # The box's local axes (its edges, Blender world) seen in animkit's world axes.
+        quaternion = axes.matrices_to_quaternions(axes.BLENDER_TO_ANIMKIT @ rotation)
         return animkit.Collider.box(
             obj.name, tuple(half), position=tuple(axes.points_to_animkit(centre)),
-            rotation=tuple(quaternion), friction=friction), "box"
+            rotation=tuple(quaternion), keyframes=keyframes(centre, rotation),
+            friction=friction), "box"
     if len(tris) == 0:
         raise ClothSetupError(f"collider '{obj.name}' has no faces")
+    # The mesh's local frame is the world at the first frame.
     return animkit.Collider.mesh(obj.name, axes.points_to_animkit(world), tris,
+                                 keyframes=keyframes(np.zeros(3), axes.ANIMKIT_TO_BLENDER),
                                  friction=friction), "mesh"
+
+
+def rigid_motion(name, matrices):
+    """None if the world matrices (4x4, per frame) never change; else, per frame, (R, t) of
+    the rigid transform M_k M_0^-1 carrying the first frame's world onto frame k's. Raises
+    ClothSetupError if that transform scales or shears (a collider keeps its shape)."""
+    if matrices is None or len(matrices) < 2:
+        return None
+    m = [np.array(matrix, dtype=np.float64) for matrix in matrices]
+    if all(np.allclose(x, m[0], rtol=0.0, atol=1e-9) for x in m[1:]):
+        return None
+    inverse = np.linalg.inv(m[0])
+    motion = []
+    for x in m:
+        a = x @ inverse
+        r = a[:3, :3]
+        if np.max(np.abs(r.T @ r - np.eye(3))) > 1e-6:
+            raise ClothSetupError(f"collider '{name}' changes its scale or shape while it "
+                                  "moves: only rigid motion can be simulated")
+        motion.append((axes.orthonormalize(r), a[:3, 3].copy()))
+    return motion
+
+
+def world_matrices(scene, objects, frames):
+    """Each object's world matrix at each frame (lists of 4x4 arrays), by evaluating the scene
+    frame by frame (animation, parents, constraints). Leaves the scene on frames[0]."""
+    out = [[] for _ in objects]
+    if not objects:
+        scene.frame_set(frames[0])
+        return out
+    for frame in frames:
+        scene.frame_set(frame)
+        for k, obj in enumerate(objects):
+            out[k].append(np.array(obj.matrix_world, dtype=np.float64))
+    scene.frame_set(frames[0])
+    return out
 
 
 def cloth_arrays(obj, depsgraph, pin_group="pin"):
@@ -87,7 +146,7 @@ def simulate(context, cloth_obj, collider_objs, options, report=None):
     # Start from the first frame, without an earlier bake of this operator.
     bake.remove_baked_keys(cloth_obj)
     bake.remove_cache_modifier(cloth_obj)
-    scene.frame_set(first)
+    matrices = world_matrices(scene, collider_objs, range(first, last + 1))
     depsgraph = context.evaluated_depsgraph_get()
     world, tris, pins = cloth_arrays(cloth_obj, depsgraph)
     if bake_mode == "SHAPE_KEYS" and len(world) != len(cloth_obj.data.vertices):
@@ -99,19 +158,19 @@ def simulate(context, cloth_obj, collider_objs, options, report=None):
         raise ClothSetupError(f"'{cloth_obj.name}' has no faces")
 
     friction = get("friction")
+    frame_dt = frame_step(scene)
     built = []
     kinds = []
-    for obj in collider_objs:
-        collider, kind = collider_for(animkit, obj, depsgraph, friction, report)
+    for obj, obj_matrices in zip(collider_objs, matrices):
+        collider, kind = collider_for(animkit, obj, depsgraph, friction, obj_matrices, frame_dt)
         built.append(collider)
-        kinds.append(f"{obj.name}: {kind}")
+        kinds.append(f"{obj.name}: {kind}{' (moving)' if collider.moving else ''}")
     ground = (animkit.Ground(height=get("ground_height"), friction=friction)
               if get("use_ground") else None)
 
     material = animkit.material(get("material"))
     cloth = animkit.MeshCloth(axes.points_to_animkit(world), tris, material=material,
                               gravity=get("gravity"), pins=list(pins))
-    frame_dt = frame_step(scene)
     substeps = get("substeps") or max(1, math.ceil(frame_dt / AUTO_MAX_STEP - 1e-9))
     step_dt = frame_dt / substeps
     frame_count = last - first + 1

@@ -3,6 +3,7 @@ a sphere (every vertex equidistant from the centre: a UV or ico sphere), a box (
 the corners of a rectangular box, any rotation), or else the mesh's own triangles. Everything
 here is in Blender's world space; the cloth operator converts to animkit's axes.
 """
+import itertools
 import math
 
 import numpy as np
@@ -27,34 +28,35 @@ def detect_sphere(points):
 
 def detect_box(points):
     """(centre (3,), half_extents (3,), rotation 3x3 with the box's axes as columns, det +1)
-    if the points are the 8 corners of a box (any orientation), else None."""
+    if the points are the 8 corners of a box (any orientation, any proportions), else None."""
     unique = np.unique(np.round(points, 9), axis=0)
     if len(unique) != 8:
         return None
     centre = unique.mean(axis=0)
-    corner = unique[0]
-    others = unique[1:] - corner
-    lengths = np.linalg.norm(others, axis=1)
-    edges = others[np.argsort(lengths)[:3]]
-    size = float(lengths.max())
+    others = unique[1:] - unique[0]
+    size = float(np.linalg.norm(others, axis=1).max())
     if size <= 0.0:
         return None
-    norms = np.linalg.norm(edges, axis=1)
-    if np.any(norms < SHAPE_TOLERANCE * size):
-        return None
-    axes = edges / norms[:, None]
-    gram = axes @ axes.T
-    if np.max(np.abs(gram - np.eye(3))) > SHAPE_TOLERANCE:
-        return None
-    # Every corner must be centre +- the half edges along the three axes.
-    local = (unique - centre) @ axes.T
-    half = 0.5 * norms
-    if np.max(np.abs(np.abs(local) - half)) > SHAPE_TOLERANCE * size:
-        return None
-    rotation = axes.T.copy()
-    if np.linalg.det(rotation) < 0.0:
-        rotation[:, 2] *= -1.0
-    return centre, half, rotation
+    # The corner's three edges: three of the other corners' offsets, mutually perpendicular,
+    # whose subset sums give all seven offsets.
+    targets = {tuple(np.round(v / size, 6)) for v in others}
+    for triple in itertools.combinations(range(7), 3):
+        edges = others[list(triple)]
+        norms = np.linalg.norm(edges, axis=1)
+        if np.any(norms < SHAPE_TOLERANCE * size):
+            continue
+        axes = edges / norms[:, None]
+        if np.max(np.abs(axes @ axes.T - np.eye(3))) > SHAPE_TOLERANCE:
+            continue
+        sums = {tuple(np.round((a * edges[0] + b * edges[1] + c * edges[2]) / size, 6))
+                for a in (0, 1) for b in (0, 1) for c in (0, 1) if a or b or c}
+        if sums != targets:
+            continue
+        rotation = axes.T.copy()
+        if np.linalg.det(rotation) < 0.0:
+            rotation[:, 2] *= -1.0
+        return centre, 0.5 * norms, rotation
+    return None
 
 
 def icosphere_inradius_ratio(level):
