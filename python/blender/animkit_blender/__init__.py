@@ -15,15 +15,7 @@ bl_info = {
     "category": "Animation",
 }
 
-if "bpy" in locals():
-    import importlib
-
-    for _module in ("axes", "module", "mesh_data", "colliders", "bake", "armature_motion",
-                    "cloth_operator", "footlock_operator"):
-        if _module in locals():
-            importlib.reload(locals()[_module])
-
-import bpy  # noqa: E402
+import bpy  # noqa: E402  (after bl_info, as Blender add-ons are laid out)
 
 from . import cloth_operator, footlock_operator  # noqa: E402
 

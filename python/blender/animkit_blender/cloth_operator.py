@@ -142,6 +142,7 @@ def simulate(context, cloth_obj, collider_objs, options, report=None):
         raise ClothSetupError(f"the scene's frame range {first}..{last} has no step")
     bake_mode = get("bake_mode")
     started = time.perf_counter()
+    original_frame = scene.frame_current
 
     # Start from the first frame, without an earlier bake of this operator.
     bake.remove_baked_keys(cloth_obj)
@@ -156,6 +157,11 @@ def simulate(context, cloth_obj, collider_objs, options, report=None):
             "point cache")
     if len(tris) == 0:
         raise ClothSetupError(f"'{cloth_obj.name}' has no faces")
+    enabled = [m.name for m in cloth_obj.modifiers if m.show_viewport or m.show_render]
+    if bake_mode == "SHAPE_KEYS" and enabled and report is not None:
+        report({"WARNING"}, f"'{cloth_obj.name}' has modifiers ({', '.join(enabled)}) that "
+                            "apply again on top of the baked shape keys: apply or disable them, "
+                            "or bake as a point cache")
 
     friction = get("friction")
     frame_dt = frame_step(scene)
@@ -208,7 +214,7 @@ def simulate(context, cloth_obj, collider_objs, options, report=None):
         bake.add_cache_modifier(cloth_obj, bpy.path.relpath(path) if bpy.data.filepath else path,
                                 first)
         stats["cache"] = path
-    scene.frame_set(first)
+    scene.frame_set(original_frame)
     stats["total_seconds"] = time.perf_counter() - started
     return stats
 

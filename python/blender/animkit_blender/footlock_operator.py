@@ -29,6 +29,15 @@ def library_settings():
         return dict(_FALLBACK_SETTINGS)
 
 
+def _unrounded(value, default):
+    """A setting as the library gets it: Blender keeps float properties as float32, so a
+    property left at the library's default (0.05) reads back rounded (0.0500000007); that
+    value is given as the exact default, so the result matches the CLI's bit for bit."""
+    if isinstance(default, float) and abs(value - default) <= 1e-7 * max(1.0, abs(default)):
+        return default
+    return value
+
+
 def action_frames(action):
     """The whole frames an action covers: first..last of its frame range."""
     first, last = action.frame_range
@@ -93,12 +102,9 @@ def lock_armature(context, obj, options, report=None):
         raise armature_motion.ArmatureError(f"action '{action.name}' has fewer than 2 frames")
     render = context.scene.render
     frame_time = render.fps_base / render.fps
-    settings = animkit.FootLockSettings(
-        height_threshold=get("height_threshold"), speed_threshold=get("speed_threshold"),
-        min_contact_frames=get("min_contact_frames"), merge_gap_frames=get("merge_gap_frames"),
-        blend_frames=get("blend_frames"), min_knee_flexion=get("min_knee_flexion"),
-        max_knee_flexion=get("max_knee_flexion"), knee_pole=get("knee_pole"),
-        soft_reach=get("soft_reach"))
+    defaults = animkit.FootLockSettings()
+    settings = animkit.FootLockSettings(**{
+        name: _unrounded(get(name), getattr(defaults, name)) for name in _FALLBACK_SETTINGS})
     legs = ((get("left_hip"), get("left_knee"), get("left_ankle")),
             (get("right_hip"), get("right_knee"), get("right_ankle")))
     for name in (n for leg in legs for n in leg):

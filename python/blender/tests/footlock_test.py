@@ -82,6 +82,16 @@ def main():
     check(len(frames) == clip.motion.frame_count, f"{len(frames)} frames in Blender")
     before = sliding_cm(ankle_heads(armature, frames), spans)
 
+    # The operator's settings default to the library's (Blender stores floats as float32).
+    defaults = animkit.FootLockSettings()
+    properties = bpy.ops.animkit.lock_feet.get_rna_type().properties
+    for name in ("height_threshold", "speed_threshold", "min_contact_frames",
+                 "merge_gap_frames", "blend_frames", "min_knee_flexion", "max_knee_flexion",
+                 "knee_pole", "soft_reach"):
+        ours, theirs = properties[name].default, getattr(defaults, name)
+        same = ours == theirs if isinstance(theirs, (int, str)) else abs(ours - theirs) < 1e-6
+        check(same, f"operator default {name}={ours!r}, the library's {theirs!r}")
+
     support.make_active(armature)
     started = time.perf_counter()
     result = bpy.ops.animkit.lock_feet()
