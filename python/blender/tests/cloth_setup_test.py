@@ -6,7 +6,8 @@
 1. Colliders: a turned, stretched cube is a box (half extents, rotation, centre in animkit's
    axes), a scaled ico sphere a sphere (made a little larger, so its inscribed surface holds
    the true sphere), a cone a triangle mesh; an animated sphere is keyframed along its path.
-2. Pins: the vertices of the cloth's vertex group "pin" stay put, the others fall.
+2. Pins: the vertices of the cloth's vertex group "pin" stay put, the others fall (on a
+   turned, scaled plane: the bake converts back to the object's own space).
 3. Errors: a cloth starting inside a collider, or no animkit module, cancel the operator with
    an error report (no Python exception escapes it).
 """
@@ -104,6 +105,10 @@ def check_pins():
     scene = bpy.context.scene
     scene.frame_start, scene.frame_end = 1, 6
     cloth = make_plane(1.0)
+    # Turned and scaled: the bake goes back from world space to the object's own.
+    cloth.rotation_euler = (0.0, 0.0, math.radians(25))
+    cloth.scale = (1.3, 0.8, 1.0)
+    bpy.context.view_layer.update()
     corners = [v.index for v in cloth.data.vertices
                if abs(v.co.x) > 0.49 and v.co.y > 0.49]
     check(len(corners) == 2, f"{len(corners)} pin corners")
