@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <mutex>
+#include <string>
 
 #include "animkit/io/png.h"
 #include "animkit/render/picture_renderer.h"
@@ -24,6 +25,13 @@ namespace py = pybind11;
 
 // The cloth and its colliders as they are now, drawn as the CLI draws a run's last frame.
 Result<Image> render(const SimulatorObject& s, int width, int height) {
+  // The sizes the CLI's --picture-size takes.
+  constexpr int kMinSide = 16, kMaxSide = 8192;
+  if (width < kMinSide || width > kMaxSide || height < kMinSide || height > kMaxSide) {
+    return fail("picture size must be between " + std::to_string(kMinSide) + " and " +
+                std::to_string(kMaxSide) + " pixels per side, got " + std::to_string(width) + "x" +
+                std::to_string(height));
+  }
   DrawList picture;
   ClothPictureFrame framing;
   {

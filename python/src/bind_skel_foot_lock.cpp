@@ -63,7 +63,7 @@ std::string metrics_repr(const FootLockMetrics& m) {
 
 /// The legs a user names: ((hip, knee, ankle), (hip, knee, ankle)) for left and right, each
 /// joint an index or a name, checked like find_biped_legs (each the parent of the next).
-BipedLegs legs_of(const Skeleton& skeleton, const py::handle& legs) {
+BipedLegs legs_of(const Skeleton& skeleton, const py::object& legs) {
   if (legs.is_none()) return unwrap(find_biped_legs(skeleton));
   const char* sides[2] = {"left", "right"};
   const char* roles[3] = {"hip", "knee", "ankle"};
@@ -94,7 +94,7 @@ BipedLegs legs_of(const Skeleton& skeleton, const py::handle& legs) {
 }
 
 PyFootLockResult run_lock(const Skeleton& skeleton, const SkeletalMotion& motion,
-                          const FootLockSettings* settings, const py::handle& legs) {
+                          const FootLockSettings* settings, const py::object& legs) {
   const BipedLegs chosen = legs_of(skeleton, legs);
   const FootLockSettings used = settings ? *settings : FootLockSettings{};
   PyFootLockResult out;

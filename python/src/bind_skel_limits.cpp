@@ -19,7 +19,7 @@ namespace {
 
 /// An axis as given, scaled to unit length when it is finite and non-zero (as the limits file
 /// does); otherwise left for validate() to name.
-Vec3 unit_axis(const py::handle& value, std::string_view what) {
+Vec3 unit_axis(const py::object& value, std::string_view what) {
   Vec3 axis = to_vec3(value, what);
   const double norm = axis.norm();
   if (std::isfinite(norm) && norm > 0.0) axis /= norm;
@@ -34,7 +34,7 @@ std::string vec_repr(const Vec3& v) {
   return "(" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + ")";
 }
 
-JointLimit to_limit(const py::handle& value, std::string_view what) {
+JointLimit to_limit(const py::object& value, std::string_view what) {
   JointLimit limit;
   if (value.is_none() || py::isinstance<FreeJoint>(value)) {
     limit = FreeJoint{};
@@ -62,7 +62,7 @@ py::list limits_to_list(const std::vector<JointLimit>& limits) {
 
 }  // namespace
 
-std::vector<JointLimit> to_joint_limits(const py::handle& limits, const Skeleton& skeleton) {
+std::vector<JointLimit> to_joint_limits(const py::object& limits, const Skeleton& skeleton) {
   if (limits.is_none()) return {};
   if (!py::isinstance<py::sequence>(limits) || py::isinstance<py::str>(limits)) {
     raise("limits must be a list of joint limits (one per joint), got " +
@@ -93,7 +93,7 @@ void bind_skel_limits(py::module_& m) {
   py::class_<HingeLimit>(m, "HingeLimit",
                          "A hinge joint limit: rotations about one axis (joint's rest frame) by "
                          "an angle in [min_angle, max_angle] radians.")
-      .def(py::init([](const py::handle& axis, double min_angle, double max_angle) {
+      .def(py::init([](const py::object& axis, double min_angle, double max_angle) {
              HingeLimit h;
              h.axis = unit_axis(axis, "hinge axis");
              h.min_angle = min_angle;
@@ -108,7 +108,7 @@ void bind_skel_limits(py::module_& m) {
            "max_angle] radians, both in [-pi, pi]. Raises animkit.Error when invalid.")
       .def_property(
           "axis", [](const HingeLimit& h) { return vec3_to_array(h.axis); },
-          [](HingeLimit& h, const py::handle& v) { h.axis = unit_axis(v, "hinge axis"); },
+          [](HingeLimit& h, const py::object& v) { h.axis = unit_axis(v, "hinge axis"); },
           "(3,) unit hinge axis in the joint's rest frame (normalized when set).")
       .def_readwrite("min_angle", &HingeLimit::min_angle, "Least angle, radians.")
       .def_readwrite("max_angle", &HingeLimit::max_angle, "Largest angle, radians.")
@@ -124,8 +124,8 @@ void bind_skel_limits(py::module_& m) {
                         "A ball joint limit: the bone swings within a cone (circular, or "
                         "elliptical with swing_angle_2) about its rest direction and twists "
                         "about itself within [min_twist, max_twist]; radians.")
-      .def(py::init([](const py::handle& twist_axis, double swing_angle, double min_twist,
-                       double max_twist, const py::handle& swing_axis,
+      .def(py::init([](const py::object& twist_axis, double swing_angle, double min_twist,
+                       double max_twist, const py::object& swing_axis,
                        std::optional<double> swing_angle_2) {
              BallLimit b;
              b.twist_axis = unit_axis(twist_axis, "ball twist axis");
@@ -149,14 +149,14 @@ void bind_skel_limits(py::module_& m) {
            "to twist_axis). Raises animkit.Error when invalid.")
       .def_property(
           "twist_axis", [](const BallLimit& b) { return vec3_to_array(b.twist_axis); },
-          [](BallLimit& b, const py::handle& v) { b.twist_axis = unit_axis(v, "ball twist axis"); },
+          [](BallLimit& b, const py::object& v) { b.twist_axis = unit_axis(v, "ball twist axis"); },
           "(3,) unit bone direction at rest, joint's rest frame.")
       .def_readwrite("swing_angle", &BallLimit::swing_angle, "Cone half-angle, radians.")
       .def_readwrite("min_twist", &BallLimit::min_twist, "Least twist, radians.")
       .def_readwrite("max_twist", &BallLimit::max_twist, "Largest twist, radians.")
       .def_property(
           "swing_axis", [](const BallLimit& b) { return vec3_to_array(b.swing_axis); },
-          [](BallLimit& b, const py::handle& v) { b.swing_axis = unit_axis(v, "ball swing axis"); },
+          [](BallLimit& b, const py::object& v) { b.swing_axis = unit_axis(v, "ball swing axis"); },
           "(3,) elliptical cones: the swing axis whose half-angle is swing_angle.")
       .def_readwrite("swing_angle_2", &BallLimit::swing_angle_2,
                      "Elliptical cones: the other half-angle (radians); None for a circle.")
@@ -172,7 +172,7 @@ void bind_skel_limits(py::module_& m) {
 
   m.def(
       "constrain",
-      [](const py::handle& limit, const py::handle& q) {
+      [](const py::object& limit, const py::object& q) {
         return quat_to_array(constrain(to_limit(limit, "limit"), to_unit_quat(q, "q")));
       },
       py::arg("limit"), py::arg("q"),
@@ -181,14 +181,14 @@ void bind_skel_limits(py::module_& m) {
       "limit or a non-unit q.");
   m.def(
       "violation",
-      [](const py::handle& limit, const py::handle& q) {
+      [](const py::object& limit, const py::object& q) {
         return violation(to_limit(limit, "limit"), to_unit_quat(q, "q"));
       },
       py::arg("limit"), py::arg("q"),
       "How far the unit quaternion q is beyond `limit`, radians (0 inside).");
   m.def(
       "swing_twist",
-      [](const py::handle& q, const py::handle& axis) {
+      [](const py::object& q, const py::object& axis) {
         const Vec3 a = to_vec3(axis, "axis");
         if (!(std::isfinite(a.norm()) && std::abs(a.norm() - 1.0) <= 1e-6)) {
           raise("axis must be a finite unit vector");

@@ -89,10 +89,10 @@ PyTreeIkSolver make_solver(const Skeleton& skeleton, const std::string& solver,
   return s;
 }
 
-PyTreeIkResult solve(PyTreeIkSolver& s, const SkeletonPose* pose, const py::handle& effectors,
-                     const py::handle& limits) {
+PyTreeIkResult solve(PyTreeIkSolver& s, const SkeletonPose* pose, const py::object& effectors,
+                     const py::object& limits) {
   s.effectors.clear();
-  auto add = [&](const py::handle& item, std::size_t i) {
+  auto add = [&](const py::object& item, std::size_t i) {
     if (!py::isinstance<PyEffector>(item)) {
       raise("effectors[" + std::to_string(i) + "] must be an Effector, got " +
             std::string(py::str(py::type::of(item).attr("__name__"))));
@@ -146,8 +146,8 @@ void bind_skel_tree_ik(py::module_& m) {
   py::class_<PyEffector>(m, "Effector",
                          "An IK end effector: a joint (index or name) and where it should be "
                          "(world, scene units), optionally with an orientation and a weight.")
-      .def(py::init([](std::variant<int, std::string> joint, const py::handle& position,
-                       const py::handle& orientation, double weight) {
+      .def(py::init([](std::variant<int, std::string> joint, const py::object& position,
+                       const py::object& orientation, double weight) {
              PyEffector e;
              e.joint = std::move(joint);
              e.position = to_vec3(position, "effector position");
@@ -163,7 +163,7 @@ void bind_skel_tree_ik(py::module_& m) {
       .def_readwrite("joint", &PyEffector::joint, "The joint, an index or a name.")
       .def_property(
           "position", [](const PyEffector& e) { return vec3_to_array(e.position); },
-          [](PyEffector& e, const py::handle& v) { e.position = to_vec3(v, "effector position"); },
+          [](PyEffector& e, const py::object& v) { e.position = to_vec3(v, "effector position"); },
           "(3,) target position, world space.")
       .def_property(
           "orientation",
@@ -171,7 +171,7 @@ void bind_skel_tree_ik(py::module_& m) {
             if (!e.orientation) return py::none();
             return quat_to_array(*e.orientation);
           },
-          [](PyEffector& e, const py::handle& v) {
+          [](PyEffector& e, const py::object& v) {
             if (v.is_none()) {
               e.orientation.reset();
             } else {
@@ -269,8 +269,8 @@ void bind_skel_tree_ik(py::module_& m) {
 
   m.def(
       "solve_tree",
-      [](const Skeleton& skeleton, const py::handle& effectors, const SkeletonPose* pose,
-         const std::string& solver, const py::handle& limits, int max_iterations, double tolerance,
+      [](const Skeleton& skeleton, const py::object& effectors, const SkeletonPose* pose,
+         const std::string& solver, const py::object& limits, int max_iterations, double tolerance,
          std::optional<double> angular, bool finish, double damping, double step,
          double orientation_weight) {
         PyTreeIkSolver s = make_solver(

@@ -26,7 +26,7 @@ std::string repr_list(const std::vector<int>& values) {
 }
 
 Skeleton make_skeleton(std::vector<std::string> names, std::vector<int> parents,
-                       const py::handle& rest_offsets, const py::handle& rest_rotations) {
+                       const py::object& rest_offsets, const py::object& rest_rotations) {
   SkeletonDesc desc;
   desc.names = std::move(names);
   desc.parents = std::move(parents);
@@ -36,7 +36,7 @@ Skeleton make_skeleton(std::vector<std::string> names, std::vector<int> parents,
 }
 
 /// A (frames, joints, columns) array's data, checked.
-DoubleArray clip_array(const py::handle& value, std::string_view what, py::ssize_t columns) {
+DoubleArray clip_array(const py::object& value, std::string_view what, py::ssize_t columns) {
   DoubleArray array = as_double_array(value, what);
   if (array.ndim() != 3 || array.shape(2) != columns) {
     std::string shape = "(";
@@ -56,7 +56,7 @@ void check_frame_time(double frame_time) {
   }
 }
 
-SkeletalMotion make_motion_from(const py::handle& rotations, const py::handle& translations,
+SkeletalMotion make_motion_from(const py::object& rotations, const py::object& translations,
                                 double frame_time) {
   const DoubleArray r = clip_array(rotations, "local_rotations", 4);
   const DoubleArray t = clip_array(translations, "local_translations", 3);
@@ -128,7 +128,7 @@ SkeletonPose empty_pose(int joints) {
 
 }  // namespace
 
-Quat to_unit_quat(const py::handle& value, std::string_view what) {
+Quat to_unit_quat(const py::object& value, std::string_view what) {
   const Quat q = to_quat(value, what);
   check_unit_quats({q}, what);
   return q;
@@ -155,7 +155,7 @@ void check_finite(const std::vector<Vec3>& points, std::string_view what) {
   }
 }
 
-int joint_index(const Skeleton& skeleton, const py::handle& joint, std::string_view what) {
+int joint_index(const Skeleton& skeleton, const py::object& joint, std::string_view what) {
   if (py::isinstance<py::str>(joint)) {
     const auto name = joint.cast<std::string>();
     const int index = skeleton.find_joint(name);
@@ -196,9 +196,17 @@ py::array_t<double> motion_translations_array(const SkeletalMotion& motion) {
 }
 
 void bind_skel_core(py::module_& m) {
-  py::class_<Skeleton>(m, "Skeleton",
-                       "A skeleton: a tree of named joints (parents before children) with rest "
-                       "offsets and rotations, immutable once built.")
+  // Both classes are registered before their methods, so signatures that mention the other
+  // (Skeleton.rest_pose) name it in Python terms.
+  py::class_<Skeleton> skeleton_class(
+      m, "Skeleton",
+      "A skeleton: a tree of named joints (parents before children) with rest "
+      "offsets and rotations, immutable once built.");
+  py::class_<SkeletonPose> pose_class(
+      m, "SkeletonPose",
+      "A configuration of a skeleton: local rotations and translations "
+      "per joint, and the global ones forward kinematics fills in.");
+  skeleton_class
       .def(py::init(&make_skeleton), py::arg("names"), py::arg("parents"), py::arg("rest_offsets"),
            py::arg("rest_rotations") = py::none(),
            "Builds a skeleton. names: unique non-empty joint names; parents[i]: the parent's "
@@ -246,14 +254,12 @@ void bind_skel_core(py::module_& m) {
                ", roots=" + repr_list(s.roots()) + ", leaves=" + repr_list(s.leaves()) + ")";
       });
 
-  py::class_<SkeletonPose>(m, "SkeletonPose",
-                           "A configuration of a skeleton: local rotations and translations "
-                           "per joint, and the global ones forward kinematics fills in.")
+  pose_class
       .def(py::init(&skeleton_rest_pose), py::arg("skeleton"), "The skeleton's rest pose (FK run).")
       .def_property(
           "local_rotations",
           [](const SkeletonPose& p) { return quats_to_array(p.local_rotations); },
-          [](SkeletonPose& p, const py::handle& v) {
+          [](SkeletonPose& p, const py::object& v) {
             set_pose_part(p.local_rotations, to_quats(v, "local_rotations"), "local_rotations");
           },
           "(n, 4) rotation of each joint relative to its parent, unit (w, x, y, z). Setting "
@@ -261,7 +267,7 @@ void bind_skel_core(py::module_& m) {
       .def_property(
           "local_translations",
           [](const SkeletonPose& p) { return vec3s_to_array(p.local_translations); },
-          [](SkeletonPose& p, const py::handle& v) {
+          [](SkeletonPose& p, const py::object& v) {
             set_pose_part(p.local_translations, to_vec3s(v, "local_translations"),
                           "local_translations");
           },
@@ -270,14 +276,14 @@ void bind_skel_core(py::module_& m) {
       .def_property(
           "global_rotations",
           [](const SkeletonPose& p) { return quats_to_array(p.global_rotations); },
-          [](SkeletonPose& p, const py::handle& v) {
+          [](SkeletonPose& p, const py::object& v) {
             set_pose_part(p.global_rotations, to_quats(v, "global_rotations"), "global_rotations");
           },
           "(n, 4) world rotation of each joint (w, x, y, z), as forward_kinematics left it.")
       .def_property(
           "global_positions",
           [](const SkeletonPose& p) { return vec3s_to_array(p.global_positions); },
-          [](SkeletonPose& p, const py::handle& v) {
+          [](SkeletonPose& p, const py::object& v) {
             set_pose_part(p.global_positions, to_vec3s(v, "global_positions"), "global_positions");
           },
           "(n, 3) world position of each joint (scene units), as forward_kinematics left it.")

@@ -25,7 +25,7 @@ void bind_skel_tree_ik(py::module_& m);    ///< Effector, TreeIkSolver, solve_tr
 
 /// One unit quaternion (w, x, y, z): finite and of norm 1 within 1e-6 (the library's
 /// tolerance), else animkit.Error naming `what`.
-Quat to_unit_quat(const py::handle& value, std::string_view what);
+Quat to_unit_quat(const py::object& value, std::string_view what);
 
 /// Raises animkit.Error unless every quaternion is finite and unit (the message names `what`
 /// and the first bad index).
@@ -35,7 +35,7 @@ void check_finite(const std::vector<Vec3>& points, std::string_view what);
 
 /// The joint `joint` names: an int index (checked against the skeleton's range) or a str
 /// name (found by Skeleton::find_joint). animkit.Error naming `what` otherwise.
-int joint_index(const Skeleton& skeleton, const py::handle& joint, std::string_view what);
+int joint_index(const Skeleton& skeleton, const py::object& joint, std::string_view what);
 
 /// A motion's frames as one (frames, joints, 3|4) array, a copy.
 py::array_t<double> motion_rotations_array(const SkeletalMotion& motion);
@@ -43,7 +43,7 @@ py::array_t<double> motion_translations_array(const SkeletalMotion& motion);
 
 /// One limit per joint from a Python list of FreeJoint / HingeLimit / BallLimit (None is a
 /// FreeJoint), each validated; animkit.Error for a wrong length or an invalid limit.
-std::vector<JointLimit> to_joint_limits(const py::handle& limits, const Skeleton& skeleton);
+std::vector<JointLimit> to_joint_limits(const py::object& limits, const Skeleton& skeleton);
 /// A limit as its Python object.
 py::object joint_limit_to_python(const JointLimit& limit);
 

@@ -334,7 +334,8 @@ def test_record_iterations():
 
 @pytest.mark.parametrize("integrator", animkit.integrator_names())
 def test_every_integrator_steps(integrator):
-    scene = animkit.ClothScene(integrator=integrator, substeps=10 if integrator == "explicit" else 0)
+    substeps = 10 if integrator == "explicit" else 0
+    scene = animkit.ClothScene(integrator=integrator, substeps=substeps)
     sim = animkit.ClothSimulator(scene)
     assert sim.integrator_name == integrator
     start = np.array(sim.positions)
@@ -457,7 +458,8 @@ def test_divergence_raises_and_keeps_the_state():
     sim = animkit.ClothSimulator(animkit.ClothScene(**explicit))
     sim.run(frames=2)
     n = sim.particle_count
-    # Explicit Euler without substeps: velocities of 5e7 units/s over a 10 s step carry particles beyond 1e8: exploded.
+    # Explicit Euler without substeps: velocities of 5e7 units/s over a 10 s step carry
+    # particles beyond 1e8, an exploded state.
     sim.set_state(np.array(sim.positions), np.full((n, 3), 5e7))
     positions, velocities = np.array(sim.positions), np.array(sim.velocities)
     time, steps = sim.time, sim.steps_taken
