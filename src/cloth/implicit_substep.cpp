@@ -24,7 +24,9 @@ void finish_implicit_substep(const ClothModel& model, Eigen::VectorXd& x, double
           (x.segment<3>(3 * i) - state.positions.segment<3>(3 * i)) / h;
     }
   }
-  state.positions.swap(x);
+  // Copied, not swapped: the state's buffers stay where they are for the whole run, so views
+  // of them (the Python module's positions array) never dangle.
+  state.positions = x;
 }
 
 }  // namespace animkit

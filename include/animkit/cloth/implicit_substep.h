@@ -31,7 +31,8 @@ struct GradientStop {
 GradientStop begin_implicit_substep(const IncrementalPotential& potential, double start_norm,
                                     double tolerance, StepReport& report);
 
-/// v_{n+1} = (x_{n+1} - x_n) / h, then x_{n+1} into `state` (swapped with `x`). Pinned particles
+/// v_{n+1} = (x_{n+1} - x_n) / h, then x_{n+1} copied into `state`
+/// (its buffers stay put: views of them stay valid). Pinned particles
 /// were never unknowns: they stay at x_n with zero velocity.
 void finish_implicit_substep(const ClothModel& model, Eigen::VectorXd& x, double h,
                              ClothState& state);
