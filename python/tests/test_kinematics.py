@@ -2,7 +2,9 @@
 FABRIK, drawing sessions and their per-frame arrays, the same bits as `animkit ik`, bad input
 as animkit.Error, and the GIL released while a session runs."""
 import csv
+import json
 import math
+import re
 import subprocess
 import threading
 import time
@@ -418,28 +420,100 @@ def read_path_csv(path):
     return columns
 
 
+# What `animkit ik` is given, the same drawing for prepare_drawing(), and run_drawing()'s options.
+CLI_CASES = [
+    (["--shape", "star"], {"shape": "star"}, {}),
+    (["--shape", "heart"], {"shape": "heart"}, {}),
+    (["--text", "QD"], {"text": "QD"}, {}),
+    (["--shape", "spiral", "--spacing", "0.02"], {"shape": "spiral", "spacing": 0.02}, {}),
+    (["--shape", "triangle", "--laps", "2", "--cold-start"], {"shape": "triangle"},
+     {"laps": 2, "warm_start": False}),
+    (["--shape", "circle", "--fabrik-rotations", "previous", "--tolerance", "1e-6",
+      "--max-iterations", "7"], {"shape": "circle"},
+     {"fabrik_rotations": "previous", "tolerance": 1e-6, "max_iterations": 7}),
+]
+
+
+def run_cli(cli, out, *args):
+    subprocess.run([str(cli), "ik", *args, "--out", str(out), "--no-picture"], check=True,
+                   capture_output=True)
+    with open(out / "metrics.json") as f:
+        metrics = json.load(f)
+    return read_path_csv(out / "path.csv"), metrics
+
+
 @pytest.mark.parametrize("solver", SOLVERS)
-@pytest.mark.parametrize("source", [["--shape", "star"], ["--shape", "heart"],
-                                    ["--text", "QD"], ["--shape", "spiral", "--spacing", "0.02"]])
-def test_run_drawing_equals_the_cli_bit_for_bit(arm, cli, tmp_path, solver, source):
-    # path.csv holds every number at round-trip precision (%.17g): float() of its text gives
-    # the very double the CLI computed, so == compares bits.
-    out = tmp_path / "out"
-    subprocess.run([str(cli), "ik", *source, "--solver", solver, "--out", str(out),
-                    "--no-picture"], check=True, capture_output=True)
-    cli_run = read_path_csv(out / "path.csv")
-    kwargs = {source[0][2:]: source[1]}
-    if "--spacing" in source:
-        kwargs["spacing"] = float(source[-1])
-    trajectory = animkit.drawing_targets(**kwargs)
-    run = animkit.run_drawing(arm, trajectory, solver=solver)
+@pytest.mark.parametrize("cli_args, drawing, options", CLI_CASES,
+                         ids=[" ".join(case[0]) for case in CLI_CASES])
+def test_run_drawing_equals_the_cli_bit_for_bit(arm, cli, tmp_path, solver, cli_args, drawing,
+                                                options):
+    # path.csv holds every number at round-trip precision (%.17g), and metrics.json too: float()
+    # of its text gives the very double the CLI computed, so == compares bits.
+    cli_run, metrics = run_cli(cli, tmp_path / "out", *cli_args, "--solver", solver)
+    run = animkit.run_drawing(arm, animkit.drawing_targets(**drawing), solver=solver, **options)
     assert len(run) == len(cli_run["frame"])
-    np.testing.assert_array_equal(run.targets[:, 0], cli_run["target_x"])
-    np.testing.assert_array_equal(run.targets[:, 2], cli_run["target_z"])
+    for axis, name in enumerate("xyz"):
+        np.testing.assert_array_equal(run.targets[:, axis], cli_run[f"target_{name}"])
+        np.testing.assert_array_equal(run.end_effectors[:, axis], cli_run[f"end_{name}"])
     np.testing.assert_array_equal(run.iterations, cli_run["iterations"])
     np.testing.assert_array_equal(run.errors, cli_run["error"])
-    for axis, name in enumerate("xyz"):
-        np.testing.assert_array_equal(run.end_effectors[:, axis], cli_run[f"end_{name}"])
     np.testing.assert_array_equal(run.converged, cli_run["converged"] == 1)
     np.testing.assert_array_equal(run.reachable, cli_run["reachable"] == 1)
     np.testing.assert_array_equal(run.pen_down, cli_run["pen_down"] == 1)
+    s = run.summary()
+    assert s.targets == metrics["targets"]
+    assert s.converged_fraction == metrics["converged_fraction"]
+    assert s.unreachable_targets == metrics["unreachable_targets"]
+    assert s.iterations_mean == metrics["iterations"]["mean"]
+    assert s.iterations_median == metrics["iterations"]["median"]
+    assert s.iterations_max == metrics["iterations"]["max"]
+    assert s.error_mean == metrics["error"]["mean"]
+    assert s.error_max == metrics["error"]["max"]
+    assert s.max_joint_step_rad == metrics["max_joint_step_rad"]
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+@pytest.mark.parametrize("target", [(0.5, 0.0, 0.3), (-0.2, 1.1, 0.7), (0.0, 1.7, 4.0)])
+def test_solve_equals_the_clis_single_target_bit_for_bit(arm, cli, tmp_path, solver, target):
+    cli_run, metrics = run_cli(cli, tmp_path / "out", "--target", ",".join(map(repr, target)),
+                               "--solver", solver)
+    result = animkit.solve(arm, target, solver=solver)
+    assert result.iterations == cli_run["iterations"][0]
+    assert result.error == cli_run["error"][0]
+    assert result.converged == (cli_run["converged"][0] == 1)
+    assert result.reachable == (cli_run["reachable"][0] == 1)
+    end = result.pose.end_effector
+    assert [end[0], end[1], end[2]] == [cli_run[f"end_{a}"][0] for a in "xyz"]
+
+
+KINEMATICS_AND_DRAWINGS = [
+    "Chain", "Pose", "IkResult", "DrawingRun", "DrawingSummary", "rest_pose",
+    "forward_kinematics", "solve", "ik_solver_names", "fabrik_rotation_names", "run_drawing",
+    "SpacingStats", "DrawingBox", "Trajectory", "ImageStrokes", "PreparedDrawing", "lab_shape",
+    "lab_shape_names", "builtin_shape", "builtin_shape_names", "text_strokes", "read_gray_image",
+    "read_mnist_image", "image_strokes", "read_curve_csv", "parse_curve_csv", "resample",
+    "spacing_stats", "stroke_length", "fit_to_box", "reachable_box", "to_trajectory",
+    "prepare_drawing", "drawing_targets", "render_png",
+]
+
+
+def described(obj):
+    """The docstring without pybind11's signature lines."""
+    signature = re.compile(r"^(\d+\.\s*)?\w*\(.*\)\s*->")
+    lines = [line for line in (obj.__doc__ or "").splitlines()
+             if line.strip() and not signature.match(line.strip())
+             and line.strip() != "Overloaded function."]
+    return " ".join(lines)
+
+
+@pytest.mark.parametrize("name", KINEMATICS_AND_DRAWINGS)
+def test_every_class_function_and_property_says_what_it_is(name):
+    obj = getattr(animkit, name)
+    assert obj.__module__ == "animkit"
+    assert described(obj), f"{name} has no docstring"
+    if isinstance(obj, type):
+        assert "__repr__" in vars(obj), f"{name} has no __repr__"
+        for attr, value in vars(obj).items():
+            if attr.startswith("_"):
+                continue
+            assert described(value), f"{name}.{attr} has no docstring"
