@@ -411,6 +411,26 @@ def test_the_gil_is_released_while_a_session_runs(arm):
     assert max(np.diff(inside)) < 0.5 * (end - begin)
 
 
+def test_sessions_in_two_threads_at_once_give_the_serial_bits(arm):
+    targets = animkit.lab_shape("heart")
+    serial = {solver: animkit.run_drawing(arm, targets, solver=solver, laps=20)
+              for solver in SOLVERS}
+    results = {}
+
+    def draw(solver):
+        results[solver] = animkit.run_drawing(arm, targets, solver=solver, laps=20)
+
+    threads = [threading.Thread(target=draw, args=(solver,)) for solver in SOLVERS]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for solver in SOLVERS:
+        np.testing.assert_array_equal(results[solver].joint_positions,
+                                      serial[solver].joint_positions)
+        np.testing.assert_array_equal(results[solver].iterations, serial[solver].iterations)
+
+
 # ---- the same bits as the CLI -----------------------------------------------------------------
 
 def read_path_csv(path):
