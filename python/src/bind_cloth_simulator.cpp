@@ -286,6 +286,7 @@ void bind_cloth_simulator(py::module_& m) {
       .def(
           "energy",
           [](const SimulatorObject& s) {
+            py::gil_scoped_release release;  // another thread may hold the mutex a while
             std::lock_guard lock(s.mutex);
             return cloth_energy(s.sim().model(), s.sim().state());
           },
@@ -312,6 +313,7 @@ void bind_cloth_simulator(py::module_& m) {
             state.velocities = velocities.is_none()
                                    ? Eigen::VectorXd(Eigen::VectorXd::Zero(state.positions.size()))
                                    : particle_vectors(s, velocities, "velocities");
+            py::gil_scoped_release release;  // another thread may hold the mutex a while
             std::lock_guard lock(s.mutex);
             state.time = time.value_or(s.sim().state().time);
             unwrap(s.sim().set_state(state));
@@ -324,6 +326,7 @@ void bind_cloth_simulator(py::module_& m) {
           "set_external_forces",
           [](SimulatorObject& s, py::object forces) {
             const Eigen::VectorXd f = particle_vectors(s, forces, "forces");
+            py::gil_scoped_release release;  // another thread may hold the mutex a while
             std::lock_guard lock(s.mutex);
             unwrap(s.sim().set_external_forces(f));
           },
@@ -334,6 +337,7 @@ void bind_cloth_simulator(py::module_& m) {
       .def(
           "clear_external_forces",
           [](SimulatorObject& s) {
+            py::gil_scoped_release release;  // another thread may hold the mutex a while
             std::lock_guard lock(s.mutex);
             s.sim().clear_external_forces();
           },
@@ -400,6 +404,7 @@ void bind_cloth_simulator(py::module_& m) {
       .def_property_readonly(
           "collider_poses",
           [](const SimulatorObject& s) {
+            py::gil_scoped_release release;  // another thread may hold the mutex a while
             std::lock_guard lock(s.mutex);
             std::vector<ColliderPose> poses;
             for (const Collider& c : s.posed_colliders())
@@ -411,10 +416,14 @@ void bind_cloth_simulator(py::module_& m) {
       .def(
           "collider_vertices",
           [](const SimulatorObject& s) {
-            std::lock_guard lock(s.mutex);
+            std::vector<std::vector<Vec3>> vertices;
+            {
+              py::gil_scoped_release release;
+              std::lock_guard lock(s.mutex);
+              for (const Collider& c : s.posed_colliders()) vertices.push_back(c.world_vertices());
+            }
             py::list out;
-            for (const Collider& c : s.posed_colliders())
-              out.append(vec3s_to_array(c.world_vertices()));
+            for (const auto& v : vertices) out.append(vec3s_to_array(v));
             return out;
           },
           "Each collider's surface vertices now, world space (a list of (k, 3) arrays, in the "
