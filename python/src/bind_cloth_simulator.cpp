@@ -245,43 +245,36 @@ void bind_cloth_simulator(py::module_& m) {
             std::vector<StepReport> reports;
             reports.reserve(static_cast<std::size_t>(n));
             std::optional<Error> problem;
-            if (callback.is_none()) {
-              py::gil_scoped_release release;
-              std::lock_guard lock(s.mutex);
-              for (int frame = 1; frame <= n && !problem; ++frame) {
-                auto step = s.sim().step(dt);
+            // Each step without the GIL; between steps, with it: the callback, and Ctrl-C
+            // (a pending KeyboardInterrupt stops the run after the step it arrived in).
+            for (int frame = 1; frame <= n; ++frame) {
+              std::optional<Result<StepReport>> step;
+              {
+                py::gil_scoped_release release;
+                std::lock_guard lock(s.mutex);
+                step.emplace(s.sim().step(dt));
                 s.steps_taken.store(s.sim().steps_taken());
-                if (step)
-                  reports.push_back(std::move(*step));
-                else
-                  problem = step.error();
               }
-            } else {
-              for (int frame = 1; frame <= n; ++frame) {
-                std::optional<Result<StepReport>> step;
-                {
-                  py::gil_scoped_release release;
-                  std::lock_guard lock(s.mutex);
-                  step.emplace(s.sim().step(dt));
-                  s.steps_taken.store(s.sim().steps_taken());
-                }
-                if (!*step) {
-                  problem = step->error();
-                  break;
-                }
-                reports.push_back(std::move(**step));
+              if (!*step) {
+                problem = step->error();
+                break;
+              }
+              reports.push_back(std::move(**step));
+              if (!callback.is_none()) {
                 const py::object keep_going = callback(frame, reports.back());
                 if (keep_going.is(py::bool_(false))) break;
               }
+              if (PyErr_CheckSignals() != 0) throw py::error_already_set();
             }
             if (problem) raise(*problem);
             return reports;
           },
           "Takes `frames` steps of the scene's dt (None: the scene's frames) and returns their "
           "StepReports. callback(frame, report), if given, is called after each step (frame "
-          "counts from 1) with the GIL held; returning False stops the run. Raises "
-          "animkit.Error when a step diverges (that step is undone: the state is the last good "
-          "one).",
+          "counts from 1) with the GIL held; returning False stops the run. Each step runs "
+          "without the GIL. Raises animkit.Error when a step diverges (that step is undone: the "
+          "state is the last good one); Ctrl-C (KeyboardInterrupt) stops it after the current "
+          "step.",
           py::arg("frames") = py::none(), py::arg("callback") = py::none())
       .def(
           "energy",
