@@ -256,8 +256,8 @@ void bind_colliders(py::module_& m) {
                              angular_velocity, keyframes, friction, tessellation);
       },
       (std::string("A ball of `radius` m centred on its origin.") + motion_doc).c_str(),
-      py::arg("name"), py::arg("radius") = SphereShape{}.radius, py::kw_only(),
-      py::arg("position") = origin, py::arg("rotation") = identity, py::arg("velocity") = origin,
+      py::arg("name"), py::arg("radius") = SphereShape{}.radius, py::arg("position") = origin,
+      py::arg("rotation") = identity, py::arg("velocity") = origin,
       py::arg("angular_velocity") = origin, py::arg("keyframes") = py::none(),
       py::arg("friction") = defaults.friction, py::arg("tessellation") = defaults.tessellation);
   collider.def_static(
@@ -273,7 +273,7 @@ void bind_colliders(py::module_& m) {
                    "origin.") +
        motion_doc)
           .c_str(),
-      py::arg("name"), py::arg("half_extents") = py::make_tuple(0.5, 0.5, 0.5), py::kw_only(),
+      py::arg("name"), py::arg("half_extents") = py::make_tuple(0.5, 0.5, 0.5),
       py::arg("position") = origin, py::arg("rotation") = identity, py::arg("velocity") = origin,
       py::arg("angular_velocity") = origin, py::arg("keyframes") = py::none(),
       py::arg("friction") = defaults.friction, py::arg("tessellation") = defaults.tessellation);
@@ -290,8 +290,8 @@ void bind_colliders(py::module_& m) {
        motion_doc)
           .c_str(),
       py::arg("name"), py::arg("radius") = CapsuleShape{}.radius,
-      py::arg("half_length") = CapsuleShape{}.half_length, py::kw_only(),
-      py::arg("position") = origin, py::arg("rotation") = identity, py::arg("velocity") = origin,
+      py::arg("half_length") = CapsuleShape{}.half_length, py::arg("position") = origin,
+      py::arg("rotation") = identity, py::arg("velocity") = origin,
       py::arg("angular_velocity") = origin, py::arg("keyframes") = py::none(),
       py::arg("friction") = defaults.friction, py::arg("tessellation") = defaults.tessellation);
   collider.def_static(
@@ -306,7 +306,7 @@ void bind_colliders(py::module_& m) {
                    "square of `display_size` m.") +
        motion_doc)
           .c_str(),
-      py::arg("name"), py::arg("display_size") = PlaneShape{}.display_size, py::kw_only(),
+      py::arg("name"), py::arg("display_size") = PlaneShape{}.display_size,
       py::arg("position") = origin, py::arg("rotation") = identity, py::arg("velocity") = origin,
       py::arg("angular_velocity") = origin, py::arg("keyframes") = py::none(),
       py::arg("friction") = defaults.friction, py::arg("tessellation") = defaults.tessellation);
@@ -325,8 +325,8 @@ void bind_colliders(py::module_& m) {
                    "vertex indices, closed and counter-clockwise seen from outside.") +
        motion_doc)
           .c_str(),
-      py::arg("name"), py::arg("vertices"), py::arg("triangles"), py::kw_only(),
-      py::arg("position") = origin, py::arg("rotation") = identity, py::arg("velocity") = origin,
+      py::arg("name"), py::arg("vertices"), py::arg("triangles"), py::arg("position") = origin,
+      py::arg("rotation") = identity, py::arg("velocity") = origin,
       py::arg("angular_velocity") = origin, py::arg("keyframes") = py::none(),
       py::arg("friction") = defaults.friction, py::arg("tessellation") = defaults.tessellation);
   collider.def_readwrite("name", &ColliderDesc::name, "The collider's name (distinct in a scene).")

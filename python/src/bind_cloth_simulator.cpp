@@ -245,47 +245,41 @@ void bind_cloth_simulator(py::module_& m) {
             std::vector<StepReport> reports;
             reports.reserve(static_cast<std::size_t>(n));
             std::optional<Error> problem;
-            if (callback.is_none()) {
-              py::gil_scoped_release release;
-              std::lock_guard lock(s.mutex);
-              for (int frame = 1; frame <= n && !problem; ++frame) {
-                auto step = s.sim().step(dt);
+            // Each step without the GIL; between steps, with it: the callback, and Ctrl-C
+            // (a pending KeyboardInterrupt stops the run after the step it arrived in).
+            for (int frame = 1; frame <= n; ++frame) {
+              std::optional<Result<StepReport>> step;
+              {
+                py::gil_scoped_release release;
+                std::lock_guard lock(s.mutex);
+                step.emplace(s.sim().step(dt));
                 s.steps_taken.store(s.sim().steps_taken());
-                if (step)
-                  reports.push_back(std::move(*step));
-                else
-                  problem = step.error();
               }
-            } else {
-              for (int frame = 1; frame <= n; ++frame) {
-                std::optional<Result<StepReport>> step;
-                {
-                  py::gil_scoped_release release;
-                  std::lock_guard lock(s.mutex);
-                  step.emplace(s.sim().step(dt));
-                  s.steps_taken.store(s.sim().steps_taken());
-                }
-                if (!*step) {
-                  problem = step->error();
-                  break;
-                }
-                reports.push_back(std::move(**step));
+              if (!*step) {
+                problem = step->error();
+                break;
+              }
+              reports.push_back(std::move(**step));
+              if (!callback.is_none()) {
                 const py::object keep_going = callback(frame, reports.back());
                 if (keep_going.is(py::bool_(false))) break;
               }
+              if (PyErr_CheckSignals() != 0) throw py::error_already_set();
             }
             if (problem) raise(*problem);
             return reports;
           },
           "Takes `frames` steps of the scene's dt (None: the scene's frames) and returns their "
           "StepReports. callback(frame, report), if given, is called after each step (frame "
-          "counts from 1) with the GIL held; returning False stops the run. Raises "
-          "animkit.Error when a step diverges (that step is undone: the state is the last good "
-          "one).",
+          "counts from 1) with the GIL held; returning False stops the run. Each step runs "
+          "without the GIL. Raises animkit.Error when a step diverges (that step is undone: the "
+          "state is the last good one); Ctrl-C (KeyboardInterrupt) stops it after the current "
+          "step.",
           py::arg("frames") = py::none(), py::arg("callback") = py::none())
       .def(
           "energy",
           [](const SimulatorObject& s) {
+            py::gil_scoped_release release;  // another thread may hold the mutex a while
             std::lock_guard lock(s.mutex);
             return cloth_energy(s.sim().model(), s.sim().state());
           },
@@ -312,6 +306,7 @@ void bind_cloth_simulator(py::module_& m) {
             state.velocities = velocities.is_none()
                                    ? Eigen::VectorXd(Eigen::VectorXd::Zero(state.positions.size()))
                                    : particle_vectors(s, velocities, "velocities");
+            py::gil_scoped_release release;  // another thread may hold the mutex a while
             std::lock_guard lock(s.mutex);
             state.time = time.value_or(s.sim().state().time);
             unwrap(s.sim().set_state(state));
@@ -324,6 +319,7 @@ void bind_cloth_simulator(py::module_& m) {
           "set_external_forces",
           [](SimulatorObject& s, py::object forces) {
             const Eigen::VectorXd f = particle_vectors(s, forces, "forces");
+            py::gil_scoped_release release;  // another thread may hold the mutex a while
             std::lock_guard lock(s.mutex);
             unwrap(s.sim().set_external_forces(f));
           },
@@ -334,6 +330,7 @@ void bind_cloth_simulator(py::module_& m) {
       .def(
           "clear_external_forces",
           [](SimulatorObject& s) {
+            py::gil_scoped_release release;  // another thread may hold the mutex a while
             std::lock_guard lock(s.mutex);
             s.sim().clear_external_forces();
           },
@@ -400,6 +397,7 @@ void bind_cloth_simulator(py::module_& m) {
       .def_property_readonly(
           "collider_poses",
           [](const SimulatorObject& s) {
+            py::gil_scoped_release release;  // another thread may hold the mutex a while
             std::lock_guard lock(s.mutex);
             std::vector<ColliderPose> poses;
             for (const Collider& c : s.posed_colliders())
@@ -411,10 +409,14 @@ void bind_cloth_simulator(py::module_& m) {
       .def(
           "collider_vertices",
           [](const SimulatorObject& s) {
-            std::lock_guard lock(s.mutex);
+            std::vector<std::vector<Vec3>> vertices;
+            {
+              py::gil_scoped_release release;
+              std::lock_guard lock(s.mutex);
+              for (const Collider& c : s.posed_colliders()) vertices.push_back(c.world_vertices());
+            }
             py::list out;
-            for (const Collider& c : s.posed_colliders())
-              out.append(vec3s_to_array(c.world_vertices()));
+            for (const auto& v : vertices) out.append(vec3s_to_array(v));
             return out;
           },
           "Each collider's surface vertices now, world space (a list of (k, 3) arrays, in the "

@@ -1,18 +1,21 @@
 """step() and run() release the GIL: two threads simulate their own cloths at once, with the
 same bits as one after the other."""
+import os
+import signal
 import sys
 import threading
 
 import numpy as np
+import pytest
 
 import animkit
 
-BIG_STEPS = 8
+BIG_STEPS = 12
 
 
 def big_scene():
-    # 41 x 41 particles: each step takes milliseconds, long enough for the other thread.
-    return animkit.ClothScene(cloth=animkit.GridCloth(cells=40))
+    # 61 x 61 particles: each step takes milliseconds, long enough for the other thread.
+    return animkit.ClothScene(cloth=animkit.GridCloth(cells=60))
 
 
 def test_two_threads_step_at_once_with_the_same_bits():
@@ -109,3 +112,18 @@ def test_run_callback_runs_with_the_gil_between_steps():
     assert [s[0] for s in seen] == [1, 2, 3, 4, 5]
     assert [s[2] for s in seen] == [1, 2, 3, 4, 5]
     assert all(s[1] == thread.ident for s in seen)
+
+
+def test_ctrl_c_stops_a_long_run():
+    # run() checks for signals between steps: SIGINT 50 ms into a run of 100000 steps (about
+    # 10 s) raises KeyboardInterrupt long before its end, leaving the steps taken so far.
+    sim = animkit.ClothSimulator(animkit.ClothScene())
+    timer = threading.Timer(0.05, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            sim.run(frames=100_000)
+    finally:
+        timer.cancel()
+    assert 0 < sim.steps_taken < 100_000
+    sim.step()  # still usable

@@ -21,6 +21,13 @@ def test_views_follow_every_integrator(integrator):
     positions, velocities = sim.positions, sim.velocities
     assert positions.shape == (sim.particle_count, 3) and positions.dtype == np.float64
     start = positions.copy()
+    # Checked after every step (an implementation swapping buffers would alternate between
+    # two, right again after an even number of steps), then after 10 more in one run().
+    for _ in range(11):
+        sim.step()
+        assert data_pointer(positions) == data_pointer(sim.positions)
+        assert data_pointer(velocities) == data_pointer(sim.velocities)
+        np.testing.assert_array_equal(positions, np.array(sim.positions, copy=True))
     sim.run(frames=10)
     # The old views are the state: same memory as fresh ones, and the new values.
     assert np.shares_memory(positions, sim.positions)
