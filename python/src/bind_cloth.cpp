@@ -814,8 +814,11 @@ void bind_sheets(py::module_& m) {
       .def_readwrite("stiffness", &GridClothOptions::stiffness, "Spring stiffness (lab).")
       .def_readwrite("damping", &GridClothOptions::damping, "Spring damping (lab).")
       .def_readwrite("gravity", &GridClothOptions::gravity, "Acceleration along -y.")
-      .def_readwrite("material", &GridClothOptions::material,
-                     "A physical Material (a copy), or None for the lab's parameters.")
+      .def_property(
+          "material", [](const GridClothOptions& g) { return g.material; },
+          [](GridClothOptions& g, std::optional<ClothMaterial> v) { g.material = std::move(v); },
+          "A physical Material, or None for the lab's parameters (a copy; assign it back to "
+          "change the sheet).")
       .def_property(
           "pins", [](const GridClothOptions& g) { return enum_name(g.pins, kPins); },
           [](GridClothOptions& g, const std::string& v) { g.pins = parse_enum(v, kPins, "pins"); },
@@ -875,7 +878,11 @@ void bind_sheets(py::module_& m) {
       .def_readwrite("stiffness", &MeshClothOptions::stiffness, "Spring stiffness (lab).")
       .def_readwrite("damping", &MeshClothOptions::damping, "Spring damping (lab).")
       .def_readwrite("gravity", &MeshClothOptions::gravity, "Acceleration along -y.")
-      .def_readwrite("material", &MeshClothOptions::material, "A Material (a copy), or None.")
+      .def_property(
+          "material", [](const MeshClothOptions& o) { return o.material; },
+          [](MeshClothOptions& o, std::optional<ClothMaterial> v) { o.material = std::move(v); },
+          "A physical Material, or None for the lab's parameters (a copy; assign it back to "
+          "change the sheet).")
       .def_property(
           "warp", [](const MeshClothOptions& o) { return vec3_to_array(o.warp); },
           [](MeshClothOptions& o, py::object v) { o.warp = to_vec3(v, "warp"); },
@@ -949,8 +956,10 @@ void bind_scenes(py::module_& m) {
       m, "ClothScene",
       "A whole cloth run as data (the library's ClothWorldDesc, what a JSON scene file holds): "
       "the sheet, the colliders, the ground, contact and air, the integrator and the run's "
-      "length. Attributes holding a sheet, the colliders or the integrator return copies: "
-      "assign a changed one back.")
+      "length. Every attribute holding a sub-object (cloth, colliders, ground, contact, air, "
+      "integrator) returns a copy: change it, then assign it back (scene.contact.thickness = "
+      "0.01 changes only a copy; c = scene.contact; c.thickness = 0.01; scene.contact = c "
+      "changes the scene).")
       .def(py::init([](py::object cloth, std::vector<ColliderDesc> colliders,
                        std::optional<GroundDesc> ground, std::optional<ContactSettings> contact,
                        std::optional<AirSettings> air, py::object integrator, int substeps,
@@ -1000,12 +1009,24 @@ void bind_scenes(py::module_& m) {
           "for an unknown name.",
           py::arg("name"))
       .def_property("cloth", &cloth_object, &set_cloth,
-                    "The sheet: a GridCloth or a MeshCloth (a copy; assign it back).")
-      .def_readwrite("colliders", &ClothWorldDesc::colliders,
-                     "The colliders, a list (a copy; assign it back).")
-      .def_readwrite("ground", &ClothWorldDesc::ground, "The Ground, or None.")
-      .def_readwrite("contact", &ClothWorldDesc::contact, "ContactSettings.")
-      .def_readwrite("air", &ClothWorldDesc::air, "AirSettings, or None for still air.")
+                    "The sheet: a GridCloth or a MeshCloth (a copy; assign it back to change "
+                    "the scene).")
+      .def_property(
+          "colliders", [](const ClothWorldDesc& d) { return d.colliders; },
+          [](ClothWorldDesc& d, std::vector<ColliderDesc> v) { d.colliders = std::move(v); },
+          "The colliders, a list of Collider (copies; assign a list back to change the scene).")
+      .def_property(
+          "ground", [](const ClothWorldDesc& d) { return d.ground; },
+          [](ClothWorldDesc& d, std::optional<GroundDesc> v) { d.ground = std::move(v); },
+          "The Ground, or None (a copy; assign it back to change the scene).")
+      .def_property(
+          "contact", [](const ClothWorldDesc& d) { return d.contact; },
+          [](ClothWorldDesc& d, const ContactSettings& v) { d.contact = v; },
+          "The ContactSettings (a copy; assign it back to change the scene).")
+      .def_property(
+          "air", [](const ClothWorldDesc& d) { return d.air; },
+          [](ClothWorldDesc& d, std::optional<AirSettings> v) { d.air = std::move(v); },
+          "AirSettings, or None for still air (a copy; assign it back to change the scene).")
       .def_readwrite("self_friction", &ClothWorldDesc::self_friction,
                      "Coulomb coefficient between parts of the cloth.")
       .def_readwrite("friction_passes", &ClothWorldDesc::friction_passes,
@@ -1016,7 +1037,8 @@ void bind_scenes(py::module_& m) {
           "integrator",
           [](const ClothWorldDesc& d) { return integrator_object(d.simulation.integrator); },
           [](ClothWorldDesc& d, py::object v) { d.simulation.integrator = to_integrator(v); },
-          "The integrator's settings (a copy; assign it back); accepts a registry name too.")
+          "The integrator's settings (a copy; assign it back to change the scene); accepts a "
+          "registry name too.")
       .def_property_readonly(
           "integrator_name",
           [](const ClothWorldDesc& d) {

@@ -3,6 +3,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -96,12 +97,15 @@ std::unique_ptr<SimulatorObject> make_simulator(const ClothWorldDesc& scene) {
   Result<ClothWorld> world = fail("not built");
   {
     py::gil_scoped_release release;
-    cloth = build_world_cloth(scene);
-    if (cloth) world = build_cloth_world(scene);
+    // From the object's own copy: `scene` is Python's, which another thread may change while
+    // this one runs without the GIL.
+    cloth = build_world_cloth(object->desc);
+    if (cloth) world = build_cloth_world(object->desc);
   }
   object->cloth = unwrap(std::move(cloth));
   object->world = std::make_unique<ClothWorld>(unwrap(std::move(world)));
   object->initial = object->sim().state();
+  object->publish();
   return object;
 }
 
@@ -225,7 +229,7 @@ void bind_cloth_simulator(py::module_& m) {
               py::gil_scoped_release release;
               std::lock_guard lock(s.mutex);
               result.emplace(s.sim().step(h));
-              s.steps_taken.store(s.sim().steps_taken());
+              s.publish();
             }
             return unwrap(std::move(*result));
           },
@@ -243,7 +247,10 @@ void bind_cloth_simulator(py::module_& m) {
             }
             const double dt = s.desc.time_step;
             std::vector<StepReport> reports;
-            reports.reserve(static_cast<std::size_t>(n));
+            // Grown as the steps come: a long run may stop early (divergence, the callback,
+            // Ctrl-C), so reserve only a bounded start.
+            constexpr int kReserveCap = 1024;
+            reports.reserve(static_cast<std::size_t>(std::min(n, kReserveCap)));
             std::optional<Error> problem;
             // Each step without the GIL; between steps, with it: the callback, and Ctrl-C
             // (a pending KeyboardInterrupt stops the run after the step it arrived in).
@@ -253,7 +260,7 @@ void bind_cloth_simulator(py::module_& m) {
                 py::gil_scoped_release release;
                 std::lock_guard lock(s.mutex);
                 step.emplace(s.sim().step(dt));
-                s.steps_taken.store(s.sim().steps_taken());
+                s.publish();
               }
               if (!*step) {
                 problem = step->error();
@@ -309,7 +316,9 @@ void bind_cloth_simulator(py::module_& m) {
             py::gil_scoped_release release;  // another thread may hold the mutex a while
             std::lock_guard lock(s.mutex);
             state.time = time.value_or(s.sim().state().time);
-            unwrap(s.sim().set_state(state));
+            Result<void> done = s.sim().set_state(state);
+            s.publish();
+            unwrap(std::move(done));
           },
           "Replaces the state: positions (n, 3), velocities (n, 3) (None: at rest), time in s "
           "(None: unchanged). Pinned particles get zero velocity. Raises animkit.Error for a "
@@ -375,8 +384,9 @@ void bind_cloth_simulator(py::module_& m) {
           },
           "Particle masses (n,), a copy.")
       .def_property_readonly(
-          "time", [](const SimulatorObject& s) { return s.sim().state().time; },
-          "Simulated time, s.")
+          "time", [](const SimulatorObject& s) { return s.time.load(); },
+          "Simulated time, s. Safe to read from another thread while step() or run() runs "
+          "(published after each step, like steps_taken).")
       .def_property_readonly(
           "steps_taken", [](const SimulatorObject& s) { return s.steps_taken.load(); },
           "Steps taken so far (diverged ones not counted). Safe to read from another thread "
@@ -424,8 +434,8 @@ void bind_cloth_simulator(py::module_& m) {
       .def("__repr__", [](const SimulatorObject& s) {
         return "ClothSimulator(particles=" + std::to_string(s.sim().model().particle_count()) +
                ", integrator='" + std::string(integrator_entry(s.sim().options().integrator).name) +
-               "', time=" + repr_number(s.sim().state().time) +
-               ", steps_taken=" + std::to_string(s.sim().steps_taken()) + ")";
+               "', time=" + repr_number(s.time.load()) +
+               ", steps_taken=" + std::to_string(s.steps_taken.load()) + ")";
       });
 }
 

@@ -15,6 +15,7 @@
 #include "animkit/scene/ik_scene.h"
 #include "animkit/scene/orbit_camera.h"
 #include "bind_kin_common.h"
+#include "picture_lock.h"
 #include "python_errors.h"
 
 namespace animkit::python {
@@ -25,6 +26,7 @@ namespace {
 
 void render_run(const std::filesystem::path& path, const PyDrawingRun& drawing, int width,
                 int height, std::optional<long long> frame) {
+  check(check_picture_size(width, height));
   const std::vector<DrawingFrame>& frames = drawing.run.frames;
   if (frames.empty()) raise("the run has no frames");
   const long long count = static_cast<long long>(frames.size());
@@ -60,13 +62,24 @@ void render_run(const std::filesystem::path& path, const PyDrawingRun& drawing, 
   std::optional<Vec3> unreachable;
   if (!current.ik.reachable) unreachable = current.target;
 
-  auto renderer = PictureRenderer::create(width, height);
-  if (!renderer) raise("cannot render pictures: " + renderer.error().message);
-  const OrbitCamera camera =
-      OrbitCamera::framing(bounds, renderer->aspect(), kIkPictureYaw, kIkPicturePitch);
   DrawList list;
   describe_arm_drawing(list, {current.joint_positions, targets, pens, strokes, unreachable});
-  unwrap(write_png(path, renderer->render(list, camera)));
+  Result<void> written;
+  {
+    // Rendering and writing without the GIL; one renderer at a time in the whole module
+    // (picture_lock.h), from its creation to its destruction at the end of this scope.
+    py::gil_scoped_release release;
+    std::lock_guard renderer_lock(picture_renderer_mutex());
+    auto renderer = PictureRenderer::create(width, height);
+    if (!renderer) {
+      written = fail("cannot render pictures: " + renderer.error().message);
+    } else {
+      const OrbitCamera camera =
+          OrbitCamera::framing(bounds, renderer->aspect(), kIkPictureYaw, kIkPicturePitch);
+      written = write_png(path, renderer->render(list, camera));
+    }
+  }
+  unwrap(std::move(written));
 }
 
 }  // namespace
@@ -77,8 +90,9 @@ void bind_kin_render(py::module_& m) {
         "Renders one frame of a DrawingRun to a PNG file, as `animkit ik --out` renders\n"
         "drawing.png: the ground grid, the targets (green; pen-up travel grey), the strokes\n"
         "drawn so far in that frame's lap (red), the arm, an unreachable target (orange).\n"
-        "frame: from 0 (None: the last). Needs an OpenGL context (EGL or a display). Raises\n"
-        "animkit.Error for a frame outside the run, a bad size, no OpenGL, an unwritable path.");
+        "frame: from 0 (None: the last); width, height: pixels, 16..8192. Needs an OpenGL context\n"
+        "(EGL or a display); renders without the GIL. Raises animkit.Error for a frame outside\n"
+        "the run, a bad size, no OpenGL, an unwritable path.");
 }
 
 }  // namespace animkit::python

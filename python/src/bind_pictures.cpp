@@ -16,6 +16,7 @@
 #include "animkit/scene/orbit_camera.h"
 #include "bindings.h"
 #include "cloth_simulator_object.h"
+#include "picture_lock.h"
 #include "python_errors.h"
 
 namespace animkit::python {
@@ -24,14 +25,9 @@ namespace {
 namespace py = pybind11;
 
 // The cloth and its colliders as they are now, drawn as the CLI draws a run's last frame.
+// Called without the GIL.
 Result<Image> render(const SimulatorObject& s, int width, int height) {
-  // The sizes the CLI's --picture-size takes.
-  constexpr int kMinSide = 16, kMaxSide = 8192;
-  if (width < kMinSide || width > kMaxSide || height < kMinSide || height > kMaxSide) {
-    return fail("picture size must be between " + std::to_string(kMinSide) + " and " +
-                std::to_string(kMaxSide) + " pixels per side, got " + std::to_string(width) + "x" +
-                std::to_string(height));
-  }
+  if (auto problem = check_picture_size(width, height)) return std::unexpected(*problem);
   DrawList picture;
   ClothPictureFrame framing;
   {
@@ -41,6 +37,9 @@ Result<Image> render(const SimulatorObject& s, int width, int height) {
                    {.floor_height = framing.floor_height});
     describe_colliders(picture, s.posed_colliders());
   }
+  // One renderer at a time in the whole module (picture_lock.h), from its creation to its
+  // destruction at the end of this scope (the lock is taken first, so released last).
+  std::lock_guard renderer_lock(picture_renderer_mutex());
   auto renderer = PictureRenderer::create(width, height);
   if (!renderer) return fail("cannot render pictures: " + renderer.error().message);
   const OrbitCamera camera =

@@ -269,12 +269,17 @@ void bind_skel_tree_ik(py::module_& m) {
       .def_property_readonly(
           "tolerance", [](const PyTreeIkSolver& s) { return s.solvers.ccd.tolerance; },
           "Position tolerance (scene units).")
-      .def("solve", &solve, py::arg("pose").none(true), py::arg("effectors"),
-           py::arg("limits") = py::none(),
-           "Solves for the effectors (an Effector or a list) from `pose` (None: the rest "
-           "pose), with `limits` (one per joint, None: all free) enforced; returns a "
-           "TreeIkResult with the new pose (the given one is untouched). Runs without the GIL. "
-           "Raises animkit.Error for invalid effectors, limits or a pose of another size.")
+      .def(
+          "solve",
+          [](PyTreeIkSolver& s, const py::object& effectors, const SkeletonPose* pose,
+             const py::object& limits) { return solve(s, pose, effectors, limits); },
+          py::arg("effectors"), py::arg("pose") = nullptr, py::arg("limits") = py::none(),
+          "Solves for the effectors (an Effector or a list) from `pose` (None: the rest "
+          "pose), with `limits` (one per joint, None: all free) enforced; returns a "
+          "TreeIkResult with the new pose (the given one is untouched). Runs without the GIL; "
+          "one solver solves in one thread at a time (a second thread's solve raises "
+          "animkit.Error). Raises animkit.Error for invalid effectors, limits or a pose of "
+          "another size.")
       .def("__repr__", [](const PyTreeIkSolver& s) {
         return "TreeIkSolver(solver='" + std::string(to_string(s.kind)) +
                "', joint_count=" + std::to_string(s.skeleton.joint_count()) +
@@ -296,7 +301,7 @@ void bind_skel_tree_ik(py::module_& m) {
       py::arg("skeleton"), py::arg("effectors"), py::arg("pose") = nullptr,
       py::arg("solver") = "fabrik", py::arg("limits") = py::none(), py::kw_only(),
       SOLVER_OPTION_ARGS,
-      "One tree IK solve: TreeIkSolver(skeleton, solver, ...).solve(pose, effectors, limits).");
+      "One tree IK solve: TreeIkSolver(skeleton, solver, ...).solve(effectors, pose, limits).");
   py::class_<TwoBoneResult>(m, "TwoBoneResult",
                             "What solve_two_bone found: the two world rotations to apply and "
                             "where the middle and end joints go.")

@@ -31,6 +31,15 @@ struct SimulatorObject {
   /// while a step or run holds `mutex` (a progress bar, the tests' proof that run() lets other
   /// Python threads go on).
   std::atomic<int> steps_taken{0};
+  /// The state's time, published with steps_taken (ClothSimulator.time, __repr__).
+  std::atomic<double> time{0.0};
+
+  /// Publishes steps_taken and time from the simulator: call with `mutex` held (or before any
+  /// other thread can see the object) after anything that changes them.
+  void publish() {
+    steps_taken.store(sim().steps_taken());
+    time.store(sim().state().time);
+  }
 
   ClothSimulator& sim() { return world->simulator; }
   const ClothSimulator& sim() const { return world->simulator; }

@@ -3,7 +3,6 @@ the same numbers and file as `animkit footlock`."""
 import json
 import math
 import subprocess
-import threading
 
 import numpy as np
 import pytest
@@ -158,18 +157,16 @@ def test_bad_input(walk):
         animkit.lock_feet(s, motion, settings="defaults")
 
 
-def test_two_threads_lock_at_once(walk, locked):
-    results = [None, None]
+def test_two_threads_lock_at_once(walk, locked, run_watched):
+    # A worker locks the walk's feet again and again while this thread does too, on each of
+    # the turns it gets: it gets some only because lock_feet lets go of the GIL (see
+    # run_watched in conftest.py). Every result has the bits of one lock alone.
+    def lock():
+        return animkit.lock_feet(walk.skeleton, walk.motion)
 
-    def run(i):
-        results[i] = animkit.lock_feet(walk.skeleton, walk.motion)
-
-    threads = [threading.Thread(target=run, args=(i,)) for i in range(2)]
-    for t in threads:
-        t.start()
-    for t in threads:
-        t.join()
-    for r in results:
+    turns, in_worker, in_main = run_watched(lambda: [lock() for _ in range(10)], each_turn=lock)
+    assert turns > 0, "this thread never ran while the worker was inside lock_feet"
+    for r in in_worker + in_main:
         np.testing.assert_array_equal(r.motion.local_rotations, locked.motion.local_rotations)
 
 

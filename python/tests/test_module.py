@@ -1,8 +1,9 @@
 """The package itself: it imports, names its version, raises animkit.Error, and its type stubs
-cover the whole public API."""
+cover the whole public API; the threads tests' GIL probe works."""
 import ast
 import builtins
 import pathlib
+import time
 
 import animkit
 
@@ -48,3 +49,15 @@ def test_stub_annotations_name_only_defined_things():
                 if isinstance(name, ast.Name) and name.id not in known:
                     unknown.add(name.id)
     assert not unknown, f"stubs use undefined names: {sorted(unknown)}"
+
+
+def test_run_watched_tells_a_held_gil_from_a_released_one(run_watched):
+    # The threads tests' probe (conftest.py) on known cases: Python code holds the GIL from
+    # start to end, so this thread gets no turn while it runs; time.sleep lets go of it.
+    def busy():
+        return sum(i * i for i in range(300_000))
+
+    turns, total, _ = run_watched(busy)
+    assert turns == 0 and total > 0
+    turns, _, _ = run_watched(lambda: [time.sleep(0.005) for _ in range(10)])
+    assert turns > 0

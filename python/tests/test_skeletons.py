@@ -1,6 +1,5 @@
 """Skeletons, poses, forward kinematics and motion clips from Python."""
 import math
-import threading
 
 import numpy as np
 import pytest
@@ -166,21 +165,18 @@ def test_bad_motions():
         motion.frame_time = -1.0
 
 
-def test_global_positions_runs_in_threads(data_dir):
+def test_global_positions_runs_in_threads(data_dir, run_watched):
     clip = animkit.read_bvh(data_dir / "cmu" / "131_01.bvh", scale=0.056444)
     skeleton, motion = clip.skeleton, clip.motion
     expected = motion.global_positions(skeleton)
-    results = [None, None]
-
-    def run(i):
-        results[i] = motion.global_positions(skeleton)
-
-    threads = [threading.Thread(target=run, args=(i,)) for i in range(2)]
-    for t in threads:
-        t.start()
-    for t in threads:
-        t.join()
-    for r in results:
+    # A worker runs FK over the clip again and again while this thread does too on each of
+    # its turns, which it gets only because global_positions lets go of the GIL (see
+    # run_watched in conftest.py). Every result has the bits of one call alone.
+    turns, in_worker, in_main = run_watched(
+        lambda: [motion.global_positions(skeleton) for _ in range(30)],
+        each_turn=lambda: motion.global_positions(skeleton))
+    assert turns > 0, "this thread never ran while the worker was inside global_positions"
+    for r in in_worker + in_main:
         np.testing.assert_array_equal(r, expected)
     # Frame 0 by FK of one pose equals the clip's.
     pose = motion.pose(0, skeleton)

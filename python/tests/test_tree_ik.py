@@ -198,7 +198,7 @@ def test_reaches_captured_poses(walk, skeleton, limits, solver, limited, frame):
     # CCD's sweeps pull five effectors on one spine slowly: up to 1367 on frame 600.
     cap = 2000 if solver == "ccd" else 1000
     result = animkit.TreeIkSolver(skeleton, solver, max_iterations=cap).solve(
-        rest, effectors, joint_limits)
+        effectors, pose=rest, limits=joint_limits)
     assert result.converged and result.reachable, result
     assert result.error <= 1e-4
     pose = result.pose
@@ -253,8 +253,8 @@ def test_orientation_target(skeleton, walk):
 def test_repeated_solves_give_the_same_bits(skeleton, walk):
     solver = animkit.TreeIkSolver(skeleton, "fabrik")
     effectors = effectors_of(skeleton, captured_pose(walk, 300))
-    first = solver.solve(None, effectors)
-    second = solver.solve(None, effectors)
+    first = solver.solve(effectors)
+    second = solver.solve(effectors, pose=None)
     np.testing.assert_array_equal(first.pose.local_rotations, second.pose.local_rotations)
     once = animkit.solve_tree(skeleton, effectors)
     np.testing.assert_array_equal(once.pose.local_rotations, first.pose.local_rotations)
@@ -277,30 +277,30 @@ def test_bad_input(skeleton, limits):
     with pytest.raises(animkit.Error, match="tolerance"):
         animkit.TreeIkSolver(skeleton, tolerance=-1.0)
     with pytest.raises(animkit.Error, match="no joint named 'Tail'"):
-        solver.solve(rest, [animkit.Effector("Tail", target)])
+        solver.solve([animkit.Effector("Tail", target)], pose=rest)
     with pytest.raises(animkit.Error, match="out of range"):
-        solver.solve(rest, [animkit.Effector(99, target)])
+        solver.solve([animkit.Effector(99, target)], pose=rest)
     with pytest.raises(animkit.Error, match="root"):
-        solver.solve(rest, [animkit.Effector(0, target)])
+        solver.solve([animkit.Effector(0, target)], pose=rest)
     with pytest.raises(animkit.Error):
-        solver.solve(rest, [animkit.Effector("Head", target), animkit.Effector("Head", target)])
+        solver.solve([animkit.Effector("Head", target), animkit.Effector("Head", target)], pose=rest)
     with pytest.raises(animkit.Error):
-        solver.solve(rest, [animkit.Effector("Head", (math.nan, 0, 0))])
+        solver.solve([animkit.Effector("Head", (math.nan, 0, 0))], pose=rest)
     with pytest.raises(animkit.Error, match="unit quaternion"):
-        solver.solve(rest, [animkit.Effector("Head", target, orientation=(2, 0, 0, 0))])
+        solver.solve([animkit.Effector("Head", target, orientation=(2, 0, 0, 0))], pose=rest)
     with pytest.raises(animkit.Error, match="weight"):
-        solver.solve(rest, [animkit.Effector("Head", target, weight=0.0)])
+        solver.solve([animkit.Effector("Head", target, weight=0.0)], pose=rest)
     with pytest.raises(animkit.Error):
-        solver.solve(rest, [])
+        solver.solve([], pose=rest)
     with pytest.raises(animkit.Error, match="effectors\\[0\\] must be an Effector"):
-        solver.solve(rest, [target])
+        solver.solve([target], pose=rest)
     with pytest.raises(animkit.Error, match="limits has 2 entries for 38 joints"):
-        solver.solve(rest, [animkit.Effector("Head", target)], [None, None])
+        solver.solve([animkit.Effector("Head", target)], rest, [None, None])
     with pytest.raises(animkit.Error, match=r"limits\[1\] must be a FreeJoint"):
-        solver.solve(rest, [animkit.Effector("Head", target)], [None, 3] + [None] * 36)
+        solver.solve([animkit.Effector("Head", target)], limits=[None, 3] + [None] * 36)
     small = animkit.Skeleton(["a", "b"], [-1, 0], [[0, 0, 0], [1, 0, 0]])
     with pytest.raises(animkit.Error):
-        solver.solve(small.rest_pose(), [animkit.Effector("Head", target)])
+        solver.solve([animkit.Effector("Head", target)], pose=small.rest_pose())
     with pytest.raises(TypeError):
         animkit.Effector(1.5, target)
     with pytest.raises(animkit.Error, match="effector position must be 3 numbers"):
