@@ -66,18 +66,22 @@ void render_run(const std::filesystem::path& path, const PyDrawingRun& drawing, 
   describe_arm_drawing(list, {current.joint_positions, targets, pens, strokes, unreachable});
   Result<void> written;
   {
-    // Rendering and writing without the GIL; one renderer at a time in the whole module
-    // (picture_lock.h), from its creation to its destruction at the end of this scope.
-    py::gil_scoped_release release;
-    std::lock_guard renderer_lock(picture_renderer_mutex());
-    auto renderer = PictureRenderer::create(width, height);
-    if (!renderer) {
-      written = fail("cannot render pictures: " + renderer.error().message);
-    } else {
-      const OrbitCamera camera =
-          OrbitCamera::framing(bounds, renderer->aspect(), kIkPictureYaw, kIkPicturePitch);
-      written = write_png(path, renderer->render(list, camera));
+    py::gil_scoped_release release;  // rendering and writing without the GIL
+    Result<Image> image = fail("not rendered");
+    {
+      // One renderer at a time in the whole module (picture_lock.h), from its creation to
+      // its destruction at the end of this scope.
+      std::lock_guard renderer_lock(picture_renderer_mutex());
+      auto renderer = PictureRenderer::create(width, height);
+      if (!renderer) {
+        image = fail("cannot render pictures: " + renderer.error().message);
+      } else {
+        const OrbitCamera camera =
+            OrbitCamera::framing(bounds, renderer->aspect(), kIkPictureYaw, kIkPicturePitch);
+        image = renderer->render(list, camera);
+      }
     }
+    written = image ? write_png(path, *image) : Result<void>(std::unexpected(image.error()));
   }
   unwrap(std::move(written));
 }

@@ -241,8 +241,62 @@ def test_scene_defaults_and_builtins():
     assert scene.integrator_name == "vbd" and scene.integrator.tolerance == 1e-3
     scene.ground = animkit.Ground(height=-1)
     assert scene.ground.height == -1
-    scene.contact.thickness = 0.01  # the settings are the scene's own
+    contact = scene.contact  # a copy: change it, then assign it back
+    contact.thickness = 0.01
+    assert scene.contact.thickness != 0.01
+    scene.contact = contact
     assert scene.contact.thickness == 0.01
+
+
+def test_sub_objects_are_copies():
+    # One rule for every attribute holding a sub-object: it returns a copy. Changing the copy
+    # leaves the scene (or sheet) as it was; assigning it back changes it.
+    scene = animkit.ClothScene(
+        cloth=animkit.GridCloth(material=animkit.material("cotton")),
+        colliders=[animkit.Collider.sphere("ball", 0.3, position=(0, 0.5, 0))],
+        ground=animkit.Ground(height=-1.0), air=animkit.AirSettings(density=1.2))
+    edits = {
+        "cloth": ("cells", 20),
+        "integrator": ("tolerance", 0.5),
+        "contact": ("thickness", 0.01),
+        "ground": ("height", 3.0),
+        "air": ("density", 0.5),
+    }
+    for name, (field, value) in edits.items():
+        part = getattr(scene, name)
+        setattr(part, field, value)
+        assert getattr(getattr(scene, name), field) != value, name
+        setattr(scene, name, part)
+        assert getattr(getattr(scene, name), field) == value, name
+    colliders = scene.colliders
+    colliders[0].friction = 0.9
+    assert scene.colliders[0].friction == 0.3
+    scene.colliders = colliders
+    assert scene.colliders[0].friction == 0.9
+    for cloth in (scene.cloth, animkit.MeshCloth(
+            [[0, 0, 0], [1, 0, 0], [0, 0, 1]], [[0, 1, 2]], material=animkit.material("silk"))):
+        material = cloth.material
+        material.density = 7.0
+        assert cloth.material.density != 7.0
+        cloth.material = material
+        assert cloth.material.density == 7.0
+        cloth.material = None
+        assert cloth.material is None
+    # A copy outlives what it was copied from (no pointer into the scene's memory).
+    first = scene.colliders[0]
+    ground, air, contact = scene.ground, scene.air, scene.contact
+    scene.colliders = [animkit.Collider.box(f"box{i}") for i in range(50)]
+    scene.ground = None
+    scene.air = None
+    scene.contact = animkit.ContactSettings()
+    assert first.name == "ball" and first.friction == 0.9
+    assert ground.height == 3.0 and air.density == 0.5 and contact.thickness == 0.01
+    # The docstrings say so.
+    for cls, names in ((animkit.ClothScene, list(edits) + ["colliders"]),
+                       (animkit.GridCloth, ["material"]), (animkit.MeshCloth, ["material"])):
+        for name in names:
+            assert "a copy" in getattr(cls, name).__doc__ or "copies" in getattr(
+                cls, name).__doc__, (cls, name)
 
 
 def test_scene_errors(tmp_path):

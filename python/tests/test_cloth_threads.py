@@ -127,3 +127,51 @@ def test_ctrl_c_stops_a_long_run():
         timer.cancel()
     assert 0 < sim.steps_taken < 100_000
     sim.step()  # still usable
+
+
+def test_building_reads_its_own_copy_of_the_scene(run_watched):
+    # ClothSimulator(scene) builds without the GIL from its own copy of the scene: this
+    # thread, which gets turns only while a build runs (see run_watched in conftest.py),
+    # changes the caller's scene meanwhile; every simulator still matches the scene it was
+    # given (particle count, its `scene`), and the caller's scene keeps the last change.
+    scene = big_scene()
+    sizes = iter([10, 20, 30, 40] * 100)
+
+    def change():
+        scene.cloth = animkit.GridCloth(cells=next(sizes))
+
+    def build_many():
+        built = []
+        for _ in range(6):
+            cells = scene.cloth.cells
+            built.append((cells, animkit.ClothSimulator(scene)))
+        return built
+
+    turns, built, _ = run_watched(build_many, each_turn=change)
+    assert turns > 0, "this thread never ran while the worker was building"
+    for cells, sim in built:
+        assert sim.scene.cloth.cells == cells
+        assert sim.particle_count == (cells + 1) ** 2
+        assert np.isfinite(sim.positions).all()
+
+
+def test_time_and_repr_are_readable_while_another_thread_steps(run_watched):
+    # time and __repr__ read values published after each step (atomics), not the state a
+    # step is writing: from this thread, while the worker is inside its steps, they show
+    # whole steps only.
+    sim = animkit.ClothSimulator(big_scene())
+    dt = sim.dt
+
+    def look():
+        return sim.time, sim.steps_taken, repr(sim)
+
+    turns, _, seen = run_watched(lambda: [sim.step() for _ in range(BIG_STEPS)],
+                                 each_turn=look)
+    assert turns > 0
+    for time, steps, text in seen:
+        whole = round(time / dt)
+        assert time == pytest.approx(whole * dt, rel=0, abs=1e-12)
+        assert 0 <= whole <= BIG_STEPS and 0 <= steps <= BIG_STEPS
+        assert text.startswith("ClothSimulator(particles=3721, integrator='implicit-pcg', time=")
+    assert sim.time == pytest.approx(BIG_STEPS * dt) and sim.steps_taken == BIG_STEPS
+    assert repr(sim).endswith(f"steps_taken={BIG_STEPS})")

@@ -506,6 +506,17 @@ def test_render_png_of_a_run(tmp_path):
         animkit.render_png(tmp_path / "no" / "such" / "dir" / "x.png", run)
 
 
+def test_render_png_of_a_run_takes_the_clis_sizes(tmp_path):
+    # 16..8192 pixels per side like the CLI's --picture-size and the cloth's render_png,
+    # checked before any OpenGL (so on any machine).
+    run = animkit.run_drawing(animkit.Chain.lab_arm(), animkit.lab_shape("star"))
+    for width, height in ((8, 720), (960, 15), (8193, 720), (960, 9000)):
+        with pytest.raises(animkit.Error, match=f"picture size must be between 16 and 8192 "
+                                                f"pixels per side, got {width}x{height}"):
+            animkit.render_png(tmp_path / "x.png", run, width=width, height=height)
+    assert not (tmp_path / "x.png").exists()
+
+
 def test_render_png_is_the_clis_drawing_png(cli, tmp_path):
     # The same scene code, camera and renderer as `animkit ik --out`: the same pixels.
     out = tmp_path / "out"

@@ -85,3 +85,33 @@ def test_no_opengl_is_an_error_and_writes_nothing(tmp_path):
     assert result.stdout.startswith("ERROR: cannot render pictures: no OpenGL 3.3 context ("), \
         result.stdout + result.stderr
     assert not (tmp_path / "x.png").exists()
+
+
+def test_pictures_from_two_threads_at_once(tmp_path, run_watched):
+    # A worker renders drawing pictures while this thread renders cloth pictures on each of
+    # its turns, which it gets only because the drawing's render_png lets go of the GIL (see
+    # run_watched in conftest.py). The module lets one renderer work at a time (GLFW is not
+    # thread-safe), this thread waiting for it without the GIL; every picture has the bits of
+    # one rendered alone.
+    run = animkit.run_drawing(animkit.Chain.lab_arm(), animkit.lab_shape("heart"))
+    sim = drape(5)
+    try:
+        animkit.render_png(tmp_path / "alone.png", run, width=320, height=240)
+    except animkit.Error as error:
+        if "cannot render pictures" in str(error):
+            pytest.skip(f"no OpenGL here: {error}")
+        raise
+    cloth_alone = animkit.render_image(sim, 320, 240)
+    paths = [tmp_path / f"drawing{i}.png" for i in range(6)]
+
+    def draw_all():
+        for path in paths:
+            animkit.render_png(path, run, width=320, height=240)
+
+    turns, _, images = run_watched(draw_all, each_turn=lambda: animkit.render_image(sim, 320, 240))
+    assert turns > 0, "this thread never ran while the worker was inside render_png"
+    alone = (tmp_path / "alone.png").read_bytes()
+    for path in paths:
+        assert path.read_bytes() == alone
+    for image in images:
+        np.testing.assert_array_equal(image, cloth_alone)
