@@ -59,6 +59,9 @@ class ClothSimulator {
   Result<void> set_state(const ClothState& state);
 
   const ClothModel& model() const;
+  /// The current state. Its position and velocity buffers stay where they are for the
+  /// simulator's whole life (steps, set_state and a diverged step's undo write into them), so
+  /// a pointer or view into them (the Python module's numpy arrays) stays valid.
   const ClothState& state() const;
   const SimulationOptions& options() const;
   int steps_taken() const;
