@@ -119,15 +119,6 @@ void set_pose_part(std::vector<T>& part, std::vector<T> values, std::string_view
   part = std::move(values);
 }
 
-SkeletonPose empty_pose(int joints) {
-  SkeletonPose pose;
-  pose.local_rotations.assign(joints, Quat::Identity());
-  pose.local_translations.assign(joints, Vec3::Zero());
-  pose.global_rotations.assign(joints, Quat::Identity());
-  pose.global_positions.assign(joints, Vec3::Zero());
-  return pose;
-}
-
 }  // namespace
 
 Quat to_unit_quat(const py::object& value, std::string_view what) {
@@ -341,7 +332,7 @@ void bind_skel_core(py::module_& m) {
               raise("frame " + std::to_string(frame) + " is out of range [0, " +
                     std::to_string(c.frame_count()) + ")");
             }
-            SkeletonPose pose = empty_pose(c.joint_count);
+            SkeletonPose pose = identity_pose(c.joint_count);
             c.read_frame(frame, pose);
             if (skeleton) {
               check_pose_fits(*skeleton, pose);
@@ -365,7 +356,7 @@ void bind_skel_core(py::module_& m) {
             double* data = out.mutable_data();
             {
               py::gil_scoped_release release;
-              SkeletonPose pose = empty_pose(c.joint_count);
+              SkeletonPose pose = identity_pose(c.joint_count);
               const std::size_t n = static_cast<std::size_t>(c.joint_count);
               for (int f = 0; f < c.frame_count(); ++f) {
                 c.read_frame(f, pose);

@@ -4,22 +4,9 @@
 
 namespace animkit {
 
-namespace {
-
-SkeletonPose pose_for(int joints) {
-  SkeletonPose pose;
-  pose.local_rotations.assign(joints, Quat::Identity());
-  pose.local_translations.assign(joints, Vec3::Zero());
-  pose.global_rotations.assign(joints, Quat::Identity());
-  pose.global_positions.assign(joints, Vec3::Zero());
-  return pose;
-}
-
-}  // namespace
-
 SkeletalMotion motion_from_bvh(const BvhClip& clip) {
   SkeletalMotion motion = make_motion(clip.joint_count(), clip.frame_count(), clip.frame_time);
-  SkeletonPose pose = pose_for(clip.joint_count());
+  SkeletonPose pose = identity_pose(clip.joint_count());
   for (int f = 0; f < clip.frame_count(); ++f) {
     bvh_frame_to_pose(clip, f, pose);
     motion.write_frame(f, pose);
@@ -30,7 +17,7 @@ SkeletalMotion motion_from_bvh(const BvhClip& clip) {
 void motion_to_bvh(const SkeletalMotion& motion, BvhClip& clip) {
   assert(motion.joint_count == clip.joint_count());
   assert(motion.frame_count() == clip.frame_count());
-  SkeletonPose pose = pose_for(clip.joint_count());
+  SkeletonPose pose = identity_pose(clip.joint_count());
   for (int f = 0; f < clip.frame_count(); ++f) {
     motion.read_frame(f, pose);
     bvh_pose_to_frame(pose, clip, f);

@@ -134,6 +134,12 @@ SkeletonPose skeleton_rest_pose(const Skeleton& skeleton) {
   return pose;
 }
 
+SkeletonPose identity_pose(int joint_count) {
+  const auto n = static_cast<std::size_t>(joint_count);
+  return SkeletonPose{std::vector<Quat>(n, Quat::Identity()), std::vector<Vec3>(n, Vec3::Zero()),
+                      std::vector<Quat>(n, Quat::Identity()), std::vector<Vec3>(n, Vec3::Zero())};
+}
+
 void skeleton_forward_kinematics(const Skeleton& skeleton, SkeletonPose& pose) {
   const int n = skeleton.joint_count();
   assert(static_cast<int>(pose.local_rotations.size()) == n);

@@ -91,6 +91,9 @@ struct SkeletonPose {
 
 /// The skeleton at rest, with forward kinematics already run.
 SkeletonPose skeleton_rest_pose(const Skeleton& skeleton);
+/// A pose sized for `joint_count` joints, every rotation the identity and every translation and
+/// position zero: scratch that a clip's frames are read into (SkeletalMotion::read_frame).
+SkeletonPose identity_pose(int joint_count);
 
 /// Forward kinematics over the tree in one loop, parents before children (SPEC.md section 1
 /// with "i - 1" read as "parent(i)"):
