@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake make git pkg-config
+  build-essential cmake make ninja-build git pkg-config
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   # Image decoding and PNG writing.
   libpng-dev libjpeg62-turbo-dev

@@ -42,7 +42,7 @@ TEST(CcdTree, LabArmReachesTheChainSolversTargets) {
 // are at least what this solver reached when the test was written, less a small margin (the
 // misses: slow convergence within 100 iterations, and with hinges, fixed points of the passes
 // short of the targets; see fabrik_tree.h).
-TEST(CcdTree, ReachesJointlyReachableTargetsOnAFigure) {
+TEST(CcdTreeSlow, ReachesJointlyReachableTargetsOnAFigure) {
   const Skeleton s = tree_samples::figure();
   const auto joints = tree_samples::joints_named(s, {"l_hand", "r_hand", "l_foot", "r_foot"});
   const auto f = tree_checks::reach_fractions<Ccd>(s, joints, 200);
@@ -54,7 +54,7 @@ TEST(CcdTree, ReachesJointlyReachableTargetsOnAFigure) {
   EXPECT_GE(f.hinges, 0.29) << tree_checks::describe(f);
 }
 
-TEST(CcdTree, ReachesJointlyReachableTargetsOnTheCmuSkeleton) {
+TEST(CcdTreeSlow, ReachesJointlyReachableTargetsOnTheCmuSkeleton) {
   const auto s = tree_samples::cmu_skeleton();
   ASSERT_TRUE(s) << "no CMU data in " ANIMKIT_TEST_DATA_DIR;
   const auto joints = tree_samples::joints_named(*s, {"lhand", "rhand", "LeftAnkle", "RightAnkle"});

@@ -387,7 +387,7 @@ TEST(DlsTreeChecks, LabArmReachesTheChainSolversTargets) {
 
 // Targets made by FK of random poses inside the limits (tree_ik_checks.h's five set-ups, hands
 // and feet), solved from the rest pose: the fractions reached within tolerance.
-TEST(DlsTreeChecks, ReachesJointlyReachableTargetsOnAFigure) {
+TEST(DlsTreeChecksSlow, ReachesJointlyReachableTargetsOnAFigure) {
   const Skeleton s = tree_samples::figure();
   const auto joints = tree_samples::joints_named(s, {"l_hand", "r_hand", "l_foot", "r_foot"});
   const auto d = tree_checks::reach_fractions<Dls<DlsMethod::damped>>(s, joints, 200);
@@ -409,7 +409,7 @@ TEST(DlsTreeChecks, ReachesJointlyReachableTargetsOnAFigure) {
 }
 
 // Every jointly reachable target set, in all five set-ups (roots turn, tree_ik.h).
-TEST(DlsTreeChecks, ReachesJointlyReachableTargetsOnTheCmuSkeleton) {
+TEST(DlsTreeChecksSlow, ReachesJointlyReachableTargetsOnTheCmuSkeleton) {
   const auto s = tree_samples::cmu_skeleton();
   ASSERT_TRUE(s) << "no CMU data in " ANIMKIT_TEST_DATA_DIR;
   const auto joints = tree_samples::joints_named(*s, {"lhand", "rhand", "LeftAnkle", "RightAnkle"});

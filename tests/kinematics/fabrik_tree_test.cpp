@@ -78,7 +78,7 @@ TEST(FabrikTree, TheDlsFinishsSettingsAreValidatedWithTheirOwnMessage) {
 // targets; see fabrik_tree.h). The hinge clamp in the backward pass took the passes alone from
 // 4.5% to 56.5% with hinges on the figure and from 46.5% to 50% on the CMU skeleton; with the
 // finish, the figure's hinges went from 99% to 96% (DLS starts from other fixed points).
-TEST(FabrikTree, ReachesJointlyReachableTargetsOnAFigure) {
+TEST(FabrikTreeSlow, ReachesJointlyReachableTargetsOnAFigure) {
   const Skeleton s = tree_samples::figure();
   const auto joints = tree_samples::joints_named(s, {"l_hand", "r_hand", "l_foot", "r_foot"});
   const auto f = tree_checks::reach_fractions<Fabrik>(s, joints, 200);
@@ -99,7 +99,7 @@ TEST(FabrikTree, ReachesJointlyReachableTargetsOnAFigure) {
   EXPECT_GE(only.hinges, 0.55) << tree_checks::describe(only);
 }
 
-TEST(FabrikTree, ReachesJointlyReachableTargetsOnTheCmuSkeleton) {
+TEST(FabrikTreeSlow, ReachesJointlyReachableTargetsOnTheCmuSkeleton) {
   const auto s = tree_samples::cmu_skeleton();
   ASSERT_TRUE(s) << "no CMU data in " ANIMKIT_TEST_DATA_DIR;
   const auto joints = tree_samples::joints_named(*s, {"lhand", "rhand", "LeftAnkle", "RightAnkle"});

@@ -33,9 +33,9 @@ TEST(ClothScenes, EveryOneBuilds) {
   }
 }
 
-class BuiltinSceneAudit : public ::testing::TestWithParam<std::string_view> {};
+class BuiltinSceneAuditSlow : public ::testing::TestWithParam<std::string_view> {};
 
-TEST_P(BuiltinSceneAudit, EveryFrameIsIntersectionFreeAndConverged) {
+TEST_P(BuiltinSceneAuditSlow, EveryFrameIsIntersectionFreeAndConverged) {
   const ClothWorldDesc desc = find_cloth_scene(GetParam())->make();
   auto world = build_cloth_world(desc);
   ASSERT_TRUE(world) << world.error().message;
@@ -75,7 +75,7 @@ TEST_P(BuiltinSceneAudit, EveryFrameIsIntersectionFreeAndConverged) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, BuiltinSceneAudit,
+INSTANTIATE_TEST_SUITE_P(Scenes, BuiltinSceneAuditSlow,
                          ::testing::Values("lab", "drape-sphere", "tablecloth", "flag",
                                            "spinning-sphere", "fold"),
                          [](const auto& scene) {
