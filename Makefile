@@ -21,9 +21,11 @@ CONFIGURE_RELEASE = $(CMAKE) -S . -B $(RELEASE_DIR) $(call GENERATOR,$(RELEASE_D
 	-DCMAKE_BUILD_TYPE=Release
 # Line tables only (-g1), not full debug information: the sanitizers' reports still name file
 # and line, and the tree compiles faster. No benchmarks and no Python module there (an
-# extension under ASan needs the runtime preloaded into the interpreter).
+# extension under ASan needs the runtime preloaded into the interpreter). No precompiled
+# headers yet: they are measured and checked in the Release tree only.
 CONFIGURE_SANITIZE = $(CMAKE) -S . -B $(SANITIZE_DIR) $(call GENERATOR,$(SANITIZE_DIR)) \
 	-DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g1 -O1" -DANIMKIT_SANITIZE=ON \
+	-DANIMKIT_PRECOMPILE_HEADERS=OFF \
 	-DANIMKIT_BUILD_BENCHMARKS=OFF -DANIMKIT_BUILD_PYTHON=OFF
 
 .PHONY: deps test-deps fuzz-deps build demo viewer test test-release test-sanitize check fuzz bench clean
@@ -83,7 +85,7 @@ check: deps
 # than ASan alone, measured far too slow for the whole test suite.
 fuzz: deps fuzz-deps
 	$(CMAKE) -S . -B $(FUZZ_DIR) $(call GENERATOR,$(FUZZ_DIR)) -DCMAKE_BUILD_TYPE=Debug \
-	  -DCMAKE_CXX_COMPILER=clang++-16 \
+	  -DCMAKE_CXX_COMPILER=clang++-16 -DANIMKIT_PRECOMPILE_HEADERS=OFF \
 	  -DANIMKIT_BUILD_FUZZERS=ON -DANIMKIT_BUILD_TESTS=OFF -DANIMKIT_BUILD_CLI=OFF \
 	  -DANIMKIT_BUILD_VIEWER=OFF -DANIMKIT_BUILD_BENCHMARKS=OFF -DANIMKIT_BUILD_PYTHON=OFF
 	$(CMAKE) --build $(FUZZ_DIR) -j $(JOBS)
