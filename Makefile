@@ -21,11 +21,10 @@ CONFIGURE_RELEASE = $(CMAKE) -S . -B $(RELEASE_DIR) $(call GENERATOR,$(RELEASE_D
 	-DCMAKE_BUILD_TYPE=Release
 # Line tables only (-g1), not full debug information: the sanitizers' reports still name file
 # and line, and the tree compiles faster. No benchmarks and no Python module there (an
-# extension under ASan needs the runtime preloaded into the interpreter). No precompiled
-# headers yet: they are measured and checked in the Release tree only.
+# extension under ASan needs the runtime preloaded into the interpreter). The test programs'
+# own code gets ASan without UBSan (top-level CMakeLists.txt, ANIMKIT_SANITIZE).
 CONFIGURE_SANITIZE = $(CMAKE) -S . -B $(SANITIZE_DIR) $(call GENERATOR,$(SANITIZE_DIR)) \
 	-DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g1 -O1" -DANIMKIT_SANITIZE=ON \
-	-DANIMKIT_PRECOMPILE_HEADERS=OFF \
 	-DANIMKIT_BUILD_BENCHMARKS=OFF -DANIMKIT_BUILD_PYTHON=OFF
 
 .PHONY: deps test-deps fuzz-deps build demo viewer test test-release test-sanitize check fuzz bench clean

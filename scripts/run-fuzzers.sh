@@ -5,29 +5,34 @@
 # logs to BUILD_DIR/logs/<name>.log. Exits 1 after all targets ran if any crashed, naming
 # each crashing target and its input file. FUZZ_SEED=N fixes libFuzzer's random seed (CI does,
 # so the same commit explores the same inputs and a red CI run can be reproduced).
+# FUZZ_JOBS targets (default: one a core) run at once; each fuzzer is one process on one core.
 set -uo pipefail
 build="${1:-build/fuzz}"
 seconds="${2:-60}"
+jobs="${FUZZ_JOBS:-$(nproc)}"
 root="$(cd "$(dirname "$0")/.." && pwd)"
+results="$build/results"
+rm -rf "$results"
+mkdir -p "$results"
 
-failures=()
-for source in "$root"/fuzz/*_fuzz.cpp; do
-  target="$(basename "$source" .cpp)"
-  name="${target%_fuzz}"
-  binary="$build/fuzz/$target"
+# Fuzzes one target; prints what it found and leaves one line in $results/<target> if it failed.
+fuzz_target() {
+  local target="$1"
+  local name="${target%_fuzz}"
+  local binary="$build/fuzz/$target"
   if [ ! -x "$binary" ]; then
-    failures+=("$target: not built ($binary)")
-    continue
+    echo "$target: not built ($binary)" >"$results/$target"
+    return
   fi
-  work="$build/work/$name"
-  crashes="$build/crashes/$name"
-  log="$build/logs/$name.log"
+  local work="$build/work/$name"
+  local crashes="$build/crashes/$name"
+  local log="$build/logs/$name.log"
   rm -rf "$work"
   mkdir -p "$work" "$crashes" "$(dirname "$log")"
   if [ -d "$root/fuzz/corpus/$name" ]; then cp -R "$root/fuzz/corpus/$name/." "$work/"; fi
-  inputs=("$work")
+  local inputs=("$work")
   if [ -d "$root/fuzz/regressions/$name" ]; then inputs+=("$root/fuzz/regressions/$name"); fi
-  seed=()
+  local seed=()
   if [ -n "${FUZZ_SEED:-}" ]; then seed=(-seed="$FUZZ_SEED"); fi
   echo "fuzz: $target for ${seconds} s ..."
   # -timeout: an input taking 10 s is a hang, reported like a crash. -rss_limit_mb and
@@ -35,17 +40,31 @@ for source in "$root"/fuzz/*_fuzz.cpp; do
   ASAN_SYMBOLIZER_PATH="$(command -v llvm-symbolizer-16 || command -v llvm-symbolizer || true)" \
     "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 \
     -artifact_prefix="$crashes/" -print_final_stats=1 "${seed[@]}" "${inputs[@]}" >"$log" 2>&1
-  status=$?
+  local status=$?
+  local runs
   runs="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')"
   if [ "$status" -ne 0 ]; then
+    local input
     input="$(grep -o 'Test unit written to .*' "$log" | tail -n 1 | sed 's/Test unit written to //')"
-    failures+=("$target: ${input:-no input written} (exit $status; log $log)")
-    grep -m 1 -A 12 -E '==ERROR|ERROR: libFuzzer|fuzz check failed|runtime error' "$log" | sed 's/^/  /'
+    echo "$target: ${input:-no input written} (exit $status; log $log)" >"$results/$target"
+    { echo "fuzz: $target crashed:"
+      grep -m 1 -A 12 -E '==ERROR|ERROR: libFuzzer|fuzz check failed|runtime error' "$log" |
+        sed 's/^/  /'; }
   else
     echo "fuzz: $target: ${runs:-?} inputs, no crash"
   fi
-done
+}
 
+for source in "$root"/fuzz/*_fuzz.cpp; do
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+  fuzz_target "$(basename "$source" .cpp)" &
+done
+wait
+
+failures=()
+for result in "$results"/*; do
+  [ -e "$result" ] && failures+=("$(cat "$result")")
+done
 if [ ${#failures[@]} -gt 0 ]; then
   echo "fuzz: FAILED" >&2
   printf '  %s\n' "${failures[@]}" >&2

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <vector>
 
+#include "../support/sanitizers.h"
 #include "../support/static_equilibrium.h"
 #include "animkit/cloth/grid_cloth.h"
 
@@ -98,21 +99,9 @@ std::vector<Sag> sags(const char* material, Pins pins, int finest_cells) {
   return result;
 }
 
-// The finest grid: under AddressSanitizer (about 10x slower) the 161 x 161 solve would take
-// most of a minute, so sanitized builds stop at 81 x 81.
-// (GCC defines __SANITIZE_ADDRESS__ under -fsanitize=address, the ANIMKIT_SANITIZE build;
-// Clang answers __has_feature.)
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kFinestCells = 80;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr int kFinestCells = 80;
-#else
-constexpr int kFinestCells = 160;
-#endif
-#else
-constexpr int kFinestCells = 160;
-#endif
+// The finest grid: under the sanitizers the 161 x 161 solve would take most of a minute, so
+// sanitized builds stop at 81 x 81.
+constexpr int kFinestCells = test_support::kUnderSanitizers ? 80 : 160;
 
 class MaterialResolution : public testing::TestWithParam<const char*> {};
 

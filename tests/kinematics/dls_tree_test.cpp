@@ -163,6 +163,10 @@ TEST_P(DlsTree, TracksJointlyReachableTargetsWithinLimits) {
 // From rest to far goals in corners of the limits, a local method can stop in a local minimum
 // of the limited problem; this records how often (the fraction is printed: 75% for DLS, 73% for
 // SDLS when written, with the pelvis free to turn) and that a clear majority is still reached.
+// Which local minimum a solve falls into depends on the last bits of its sums, so the fraction
+// moves with the CPU's vector width (-march=native) and the optimisation level: SDLS reached 68%
+// in a sanitizer build on another machine. The bound leaves room for that, not for a regression
+// that loses a fifth of the targets.
 TEST_P(DlsTree, ReachesMostFarReachableTargetsFromRest) {
   const Rig rig = make_rig();
   std::mt19937_64 rng(12);
@@ -179,13 +183,14 @@ TEST_P(DlsTree, ReachesMostFarReachableTargetsFromRest) {
     converged += result->converged ? 1 : 0;
   }
   std::printf("converged on %d of %d far reachable target sets from rest\n", converged, trials);
-  EXPECT_GE(converged, trials * 70 / 100);
+  EXPECT_GE(converged, trials * 60 / 100);
 }
 
 // The same far targets through FABRIK with its DLS finish (fabrik_tree.h): the passes alone
 // reach almost none of them on this rig (hinges about z, a chest hinge about y), but the pose
 // they leave is a better start for DLS than the rest pose, so together they reach more than DLS
-// from rest (75% there, 92% here when written).
+// from rest (75% there, 92% here when written; 88% in a clang build, whose contracted
+// multiply-adds take other local minima, hence the bound).
 TEST(FabrikWithDlsFinish, ReachesMoreFarReachableTargetsFromRestThanDls) {
   const Rig rig = make_rig();
   std::mt19937_64 rng(12);
@@ -204,7 +209,7 @@ TEST(FabrikWithDlsFinish, ReachesMoreFarReachableTargetsFromRestThanDls) {
   }
   std::printf("converged on %d of %d far reachable target sets from rest, %d by the passes\n",
               converged, trials, by_passes);
-  EXPECT_GE(converged, trials * 90 / 100);
+  EXPECT_GE(converged, trials * 85 / 100);
 }
 
 // Roots turn like every joint (tree_ik.h); this rig's pelvis gets a limit with no range, which

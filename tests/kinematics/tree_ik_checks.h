@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "animkit/kinematics/ik_solver.h"
+#include "../support/sanitizers.h"
 #include "animkit/trajectory/lab_shapes.h"
 #include "tree_ik_samples.h"
 
@@ -20,9 +21,10 @@ using tree_samples::random_pose;
 
 // Seeded random targets, a third of them beyond reach, on the figure's hands, feet and head
 // (the head with an orientation target); after every solve the pose keeps its bones, its
-// roots and every limit.
+// roots and every limit. `solves` in Release, a tenth of them under the sanitizers.
 template <class Solver>
-void limits_bones_and_roots_hold(int solves, std::uint64_t seed) {
+void limits_bones_and_roots_hold(int release_solves, std::uint64_t seed) {
+  const int solves = test_support::trials_for_this_build(release_solves);
   const Skeleton s = tree_samples::figure();
   const std::vector<JointLimit> limits = body_limits(s);
   const auto joints = tree_samples::joints_named(s, {"l_hand", "r_hand", "l_foot", "r_foot"});
