@@ -47,9 +47,9 @@ fuzz_target() {
     local input
     input="$(grep -o 'Test unit written to .*' "$log" | tail -n 1 | sed 's/Test unit written to //')"
     echo "$target: ${input:-no input written} (exit $status; log $log)" >"$results/$target"
-    { echo "fuzz: $target crashed:"
-      grep -m 1 -A 12 -E '==ERROR|ERROR: libFuzzer|fuzz check failed|runtime error' "$log" |
-        sed 's/^/  /'; }
+    echo "fuzz: $target crashed:"
+    grep -m 1 -A 12 -E '==ERROR|ERROR: libFuzzer|fuzz check failed|runtime error' "$log" |
+      sed 's/^/  /'
   else
     echo "fuzz: $target: ${runs:-?} inputs, no crash"
   fi

@@ -1,6 +1,7 @@
 #pragma once
 // Whether this test binary runs under AddressSanitizer (the ANIMKIT_SANITIZE build, `make
-// test-sanitize`), where the same code runs 10 to 30 times slower than in Release. GCC defines
+// test-sanitize`), where the same code runs about 20 times slower than in Release (the tree IK
+// property checks: 206 s against 11 s). GCC defines
 // __SANITIZE_ADDRESS__ under -fsanitize=address; Clang answers __has_feature.
 // https://gcc.gnu.org/onlinedocs/cpp/Common-Predefined-Macros.html
 
