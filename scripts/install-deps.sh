@@ -1,7 +1,6 @@
 #!/usr/bin/env bash
-# Installs animkit's build and test dependencies from Debian 12's own packages. With --fuzz,
-# also what `make fuzz` needs: clang 16 and its runtime libraries (libFuzzer, ASan, UBSan), kept
-# apart so `make demo` and `make test` stay light.
+# Installs animkit's build dependencies from Debian 12's own packages; with --tests, what
+# `make test` and `make fuzz` add, kept apart so `make demo` stays light.
 # Idempotent: when every package is already installed it does nothing (no network).
 set -euo pipefail
 
@@ -37,11 +36,9 @@ if [ "${1:-}" = "--tests" ]; then
   # The tests only: Blender (Debian's 3.4, the version the README's Blender steps use) opens the
   # BVH files animkit writes and compares them with what animkit computed, and runs the add-on
   # headless; pytest runs the Python module's tests, matplotlib the examples' plots.
-  packages=(blender python3-pytest python3-matplotlib)
-fi
-if [ "${1:-}" = "--fuzz" ]; then
-  # libomp: clang's OpenMP runtime, for the cloth solvers' threads in the fuzz build.
-  packages=(clang-16 libclang-rt-16-dev libomp-16-dev)
+  # The sanitizer tree (tests under ASan + UBSan, and the fuzz targets) is built with clang 16:
+  # its runtime libraries (libFuzzer, ASan, UBSan) and its OpenMP runtime, libomp.
+  packages=(blender python3-pytest python3-matplotlib clang-16 libclang-rt-16-dev libomp-16-dev)
 fi
 
 missing=()

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs every fuzz target built in BUILD_DIR (default build/fuzz) for SECONDS (default 60) each:
+# Runs every fuzz target built in BUILD_DIR (default build/sanitize) for SECONDS (default 60) each:
 # over a scratch copy of fuzz/corpus/<name>/ (the repository's corpus does not grow) plus the
 # kept crash inputs in fuzz/regressions/<name>/. Crash inputs go to BUILD_DIR/crashes/<name>/,
 # logs to BUILD_DIR/logs/<name>.log. Exits 1 after all targets ran if any crashed, naming
@@ -7,7 +7,7 @@
 # so the same commit explores the same inputs and a red CI run can be reproduced).
 # FUZZ_JOBS targets (default: one a core) run at once; each fuzzer is one process on one core.
 set -uo pipefail
-build="${1:-build/fuzz}"
+build="${1:-build/sanitize}"
 seconds="${2:-60}"
 jobs="${FUZZ_JOBS:-$(nproc)}"
 root="$(cd "$(dirname "$0")/.." && pwd)"

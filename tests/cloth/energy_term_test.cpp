@@ -84,7 +84,9 @@ class NewtonWithTerms : public testing::TestWithParam<std::string> {};
 TEST_P(NewtonWithTerms, ReachTheSameStatesAsTheSpringsBuiltIn) {
   const SplitCloth split = split_cloth();
   IntegratorSettings settings = find_integrator(GetParam())->defaults;
-  set_tolerance(settings, 1e-10);
+  // Tight, but above rounding: the two systems sum the same springs in different orders, and
+  // clang (the sanitizer tree) fuses multiply-adds, so at 1e-10 one of them stalled at frame 16.
+  set_tolerance(settings, 1e-9);
   auto reference = ClothSimulator::create(split.whole, {settings, 0});
   auto with_term = ClothSimulator::create(split.model_part, {settings, 0});
   ASSERT_TRUE(reference && with_term);
