@@ -28,14 +28,22 @@ set(ANIMKIT_SLOW_TEST_FILTER "*Slow.*")
 # ones instead of alone at the end (ctest's own timings replace this after the first run).
 set(ANIMKIT_SLOW_TEST_COST 1000)
 
+# One OpenMP thread a test: ctest -j already gives every core a test, and a second thread per
+# test only waits for a core (MultigridPcg.CouplingsInTheHierarchySaveIterations, two copies at
+# once under the sanitizers: 62 s each with two threads, 42 s with one). The results are the
+# same bits for any thread count (tests/cloth/parallel_determinism_test.cpp, which sets its own
+# counts and so still runs the loops on two threads).
+set(ANIMKIT_TEST_THREADS ENVIRONMENT_MODIFICATION OMP_NUM_THREADS=set:1)
+
 # Registers the GoogleTest tests of `target` under `label`, its *Slow suites under `slow`, each
 # with its tier's timeout. Extra arguments are more test properties for both (ENVIRONMENT ...).
 function(animkit_discover_tests target label)
   gtest_discover_tests(${target} DISCOVERY_TIMEOUT 120 TEST_FILTER "-${ANIMKIT_SLOW_TEST_FILTER}"
-                       PROPERTIES LABELS ${label} TIMEOUT ${ANIMKIT_TEST_TIMEOUT} ${ARGN})
+                       PROPERTIES LABELS ${label} TIMEOUT ${ANIMKIT_TEST_TIMEOUT}
+                                  ${ANIMKIT_TEST_THREADS} ${ARGN})
   gtest_discover_tests(${target} DISCOVERY_TIMEOUT 120 TEST_FILTER "${ANIMKIT_SLOW_TEST_FILTER}"
                        PROPERTIES LABELS slow TIMEOUT ${ANIMKIT_SLOW_TEST_TIMEOUT}
-                                  COST ${ANIMKIT_SLOW_TEST_COST} ${ARGN})
+                                  COST ${ANIMKIT_SLOW_TEST_COST} ${ANIMKIT_TEST_THREADS} ${ARGN})
 endfunction()
 
 # Labels the tests registered with add_test by name: `label` and its tier's timeout.
@@ -44,5 +52,5 @@ function(animkit_test_tier label)
   if(label STREQUAL "slow")
     set(timeout ${ANIMKIT_SLOW_TEST_TIMEOUT})
   endif()
-  set_tests_properties(${ARGN} PROPERTIES LABELS ${label} TIMEOUT ${timeout})
+  set_tests_properties(${ARGN} PROPERTIES LABELS ${label} TIMEOUT ${timeout} ${ANIMKIT_TEST_THREADS})
 endfunction()
