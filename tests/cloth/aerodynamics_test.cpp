@@ -15,11 +15,12 @@
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/integrator_registry.h"
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
-constexpr double kFrame = 1.0 / 60.0;
+using testing_support::kFrame;
 
 BuiltCloth small_cloth() {
   auto built = build_cloth(make_grid_cloth({.cells = 3, .size = 1.0}));

@@ -16,7 +16,7 @@ namespace animkit {
 namespace {
 
 // Every integrator of the registry that solves the implicit step.
-std::vector<std::string_view> implicit_integrator_names() {
+std::vector<std::string_view> implicit_integrators() {
   std::vector<std::string_view> names;
   for (const IntegratorEntry& entry : cloth_integrators()) {
     if (tolerance_of(entry.defaults)) names.push_back(entry.name);
@@ -71,7 +71,7 @@ TEST_P(ClothProperty, RandomClothsKeepEveryInvariant) {
   EXPECT_EQ(steps, 40 * 15);
 }
 
-INSTANTIATE_TEST_SUITE_P(Implicit, ClothProperty, testing::ValuesIn(implicit_integrator_names()),
+INSTANTIATE_TEST_SUITE_P(Implicit, ClothProperty, testing::ValuesIn(implicit_integrators()),
                          [](const auto& param_info) {
                            std::string name(param_info.param);
                            for (char& c : name) c = c == '-' ? '_' : c;

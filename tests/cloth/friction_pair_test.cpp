@@ -16,14 +16,14 @@
 namespace animkit {
 namespace {
 
-constexpr double kDhat = 0.1;  // activation distance (m); the barrier takes its square
+constexpr double kFrictionDhat = 0.1;  // activation distance (m); the barrier takes its square
 
 // A ground pair's positions: the particle, then unused vertices.
 std::array<Vec3, 4> particle_at(const Vec3& p) {
   return {p, Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
 }
 
-Vec3 random_point(std::mt19937& rng) {
+Vec3 random_contact_point(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   return Vec3(u(rng), u(rng), u(rng));
 }
@@ -32,7 +32,7 @@ TEST(FrictionPair, ClosestPointWeightsSpanTheClassifiedDistance) {
   std::mt19937 rng(11);
   for (int trial = 0; trial < 2000; ++trial) {
     std::array<Vec3, 4> p;
-    for (Vec3& v : p) v = random_point(rng);
+    for (Vec3& v : p) v = random_contact_point(rng);
     for (const ContactKind kind : {ContactKind::point_triangle, ContactKind::edge_edge}) {
       const ContactPair pair{kind, {0, 1, 2, 3}};
       const std::array<double, 4> w = closest_point_weights(pair, p);
@@ -48,7 +48,7 @@ TEST(FrictionPair, ClosestPointWeightsSpanTheClassifiedDistance) {
 }
 
 TEST(FrictionPair, NormalForceIsTheBarriersForceAlongTheDistance) {
-  const LogBarrier barrier = *LogBarrier::create(kDhat * kDhat);
+  const LogBarrier barrier = *LogBarrier::create(kFrictionDhat * kFrictionDhat);
   const double kappa = 7.0, mu = 0.4, gap = 0.03;
   const ContactPair ground{ContactKind::ground, {0, -1, -1, -1}};
   const auto energy = [&](double y) { return kappa * barrier.value((y - 0.0) * (y - 0.0)); };
@@ -107,7 +107,7 @@ TEST(FrictionPair, TangentHessianIsPsdAndMatchesTheGradient) {
 
 TEST(FrictionPair, SlidingIsMeasuredAgainstTheObstaclesOwnMotion) {
   // A cloth particle (vertex 0) above an obstacle triangle (vertices 1..3 of the index space).
-  const LogBarrier barrier = *LogBarrier::create(kDhat * kDhat);
+  const LogBarrier barrier = *LogBarrier::create(kFrictionDhat * kFrictionDhat);
   const ContactPair pair{ContactKind::point_triangle, {0, 1, 2, 3}};
   const std::array<Vec3, 4> p{Vec3(0.2, 0.05, 0.2), Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 0, 1)};
   auto lagged = lag_friction_pair(pair, p, 0.0, 1.0, barrier, 0.5);

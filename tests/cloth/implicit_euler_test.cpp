@@ -11,11 +11,12 @@
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/integrator_registry.h"
 #include "animkit/cloth/material.h"
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
-constexpr double kFrame = 1.0 / 60.0;
+using testing_support::kFrame;
 
 // Newton settings with the given linear solver.
 NewtonSettings newton(LinearSolverKind solver, NewtonSettings settings = {}) {

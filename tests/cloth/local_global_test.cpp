@@ -7,11 +7,12 @@
 
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
-constexpr double kFrame = 1.0 / 60.0;
+using testing_support::kFrame;
 
 LocalGlobalSettings local_global(bool chebyshev, double tolerance = 1e-6) {
   LocalGlobalSettings settings;
@@ -22,7 +23,7 @@ LocalGlobalSettings local_global(bool chebyshev, double tolerance = 1e-6) {
   return settings;
 }
 
-ClothSimulator simulator(const ClothDesc& desc, const IntegratorSettings& settings) {
+ClothSimulator local_global_simulator(const ClothDesc& desc, const IntegratorSettings& settings) {
   auto sim = ClothSimulator::create(desc, {settings, 1});
   EXPECT_TRUE(sim) << sim.error().message;
   return std::move(*sim);
@@ -68,7 +69,7 @@ int expect_monotone(const StepReport& report) {
 }
 
 TEST(LocalGlobal, PlainMethodDecreasesGAtEveryIteration) {
-  auto sim = simulator(crumpled_cloth(1e4, 0.5), local_global(false));
+  auto sim = local_global_simulator(crumpled_cloth(1e4, 0.5), local_global(false));
   int iterations = 0;
   for (int frame = 0; frame < 20; ++frame) {
     const auto report = sim.step(kFrame);
@@ -85,7 +86,7 @@ TEST(LocalGlobal, MonotoneChebyshevDecreasesGAtEveryIterationAndRestarts) {
   // would raise g is replaced by the plain step and the sequence restarts.
   LocalGlobalSettings settings = local_global(true);
   settings.spectral_radius = 0.9999;
-  auto sim = simulator(crumpled_cloth(1e4, 0.5), settings);
+  auto sim = local_global_simulator(crumpled_cloth(1e4, 0.5), settings);
   int accelerated = 0, restarts = 0;
   for (int frame = 0; frame < 20; ++frame) {
     const auto report = sim.step(kFrame);
@@ -114,7 +115,7 @@ TEST(LocalGlobal, DecreasesGAtEveryIterationOnCotton) {
     // without the thousands a tight tolerance takes here.
     LocalGlobalSettings settings = local_global(chebyshev);
     settings.max_iterations = 200;
-    auto sim = simulator(make_grid_cloth(cotton), settings);
+    auto sim = local_global_simulator(make_grid_cloth(cotton), settings);
     int iterations = 0;
     for (int frame = 0; frame < 3; ++frame) {
       const auto report = sim.step(kFrame);
@@ -128,7 +129,8 @@ TEST(LocalGlobal, DecreasesGAtEveryIterationOnCotton) {
 TEST(LocalGlobal, ChebyshevTakesFewerIterations) {
   int plain = 0, accelerated = 0;
   for (bool chebyshev : {false, true}) {
-    auto sim = simulator(make_grid_cloth({.cells = 20, .stiffness = 1e4}), local_global(chebyshev));
+    auto sim = local_global_simulator(make_grid_cloth({.cells = 20, .stiffness = 1e4}),
+                                      local_global(chebyshev));
     for (int frame = 0; frame < 10; ++frame) {
       const auto report = sim.step(kFrame);
       ASSERT_TRUE(report && report->converged);
@@ -139,7 +141,7 @@ TEST(LocalGlobal, ChebyshevTakesFewerIterations) {
 }
 
 TEST(LocalGlobal, PinnedParticlesNeverMove) {
-  auto sim = simulator(crumpled_cloth(1e4, 0.5), LocalGlobalSettings{});
+  auto sim = local_global_simulator(crumpled_cloth(1e4, 0.5), LocalGlobalSettings{});
   const Eigen::VectorXd start = sim.state().positions;
   for (int frame = 0; frame < 30; ++frame) {
     ASSERT_TRUE(sim.step(kFrame));
@@ -161,7 +163,7 @@ TEST(LocalGlobal, ChangingTheTimeStepRefactorizes) {
   NewtonSettings newton;
   newton.linear_solver = LinearSolverKind::direct;
   newton.tolerance = 1e-10;
-  auto reference = simulator(desc, newton);
+  auto reference = local_global_simulator(desc, newton);
   ClothState state = built.state;
   for (double h : {kFrame, kFrame, 0.5 * kFrame, 0.05, kFrame}) {
     StepReport report;

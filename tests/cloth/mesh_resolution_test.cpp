@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kHeight = 1.5;
 
-struct Sag {
+struct MeshSag {
   double centre_of_mass = 0.0;  // drop below the pins, m
   double lowest = 0.0;          // drop of the lowest vertex below the pins, m
 };
@@ -28,7 +28,7 @@ struct Sag {
 // The equilibrium's sag, solved from the sheet hanging flat in the vertical plane of its pins
 // (rest (x, y, z) at (0, y - x, z)): every force then lies in that plane, so the sag is the
 // membrane's, free of the out-of-plane wrinkles of a sheet with little bending stiffness.
-Sag hanging_sag(const TriangleMesh& mesh, int cells) {
+MeshSag hanging_sag(const TriangleMesh& mesh, int cells) {
   MeshClothOptions o{.mesh = mesh, .gravity = 9.81};
   o.material = find_material("cotton")->material;
   o.pins = {grid_index(cells, 0, 0), grid_index(cells, 0, cells)};
@@ -53,9 +53,9 @@ Sag hanging_sag(const TriangleMesh& mesh, int cells) {
 }
 
 TEST(MeshResolution, ACornerPinnedCottonSheetSagsTheSameAtAnyResolutionAndTriangulation) {
-  const Sag coarse = hanging_sag(testing_support::square_sheet(20, 1.0, kHeight, 0.0), 20);
-  const Sag fine = hanging_sag(testing_support::square_sheet(40, 1.0, kHeight, 0.0), 40);
-  const Sag jittered = hanging_sag(testing_support::square_sheet(40, 1.0, kHeight, 0.25), 40);
+  const MeshSag coarse = hanging_sag(testing_support::square_sheet(20, 1.0, kHeight, 0.0), 20);
+  const MeshSag fine = hanging_sag(testing_support::square_sheet(40, 1.0, kHeight, 0.0), 40);
+  const MeshSag jittered = hanging_sag(testing_support::square_sheet(40, 1.0, kHeight, 0.25), 40);
   std::printf("centre-of-mass drop: 21x21 %.5f m, 41x41 %.5f m, 41x41 jittered %.5f m\n",
               coarse.centre_of_mass, fine.centre_of_mass, jittered.centre_of_mass);
   std::printf("lowest vertex drop:  21x21 %.5f m, 41x41 %.5f m, 41x41 jittered %.5f m\n",
@@ -64,7 +64,7 @@ TEST(MeshResolution, ACornerPinnedCottonSheetSagsTheSameAtAnyResolutionAndTriang
   EXPECT_NEAR(fine.lowest, coarse.lowest, 0.02 * coarse.lowest);
   EXPECT_NEAR(jittered.centre_of_mass, fine.centre_of_mass, 0.04 * fine.centre_of_mass);
   EXPECT_NEAR(jittered.lowest, fine.lowest, 0.04 * fine.lowest);
-  for (const Sag& s : {coarse, fine, jittered}) {
+  for (const MeshSag& s : {coarse, fine, jittered}) {
     // Hanging straight down, unstretched, the centre of mass is 0.5 m below the pins: the
     // material must stretch the sheet, and only a little (as the grid's cotton).
     EXPECT_GT(s.centre_of_mass, 0.5);

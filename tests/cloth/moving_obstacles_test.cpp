@@ -18,11 +18,12 @@
 #include "animkit/io/collider_export.h"
 #include "animkit/io/point_cache.h"
 #include "intersection_audit.h"
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
-constexpr double kFrame = 1.0 / 60.0;
+using testing_support::kFrame;
 
 // A cotton sheet (side `size`, `cells` per side) in the plane y = height centred on the y axis,
 // nothing pinned.
@@ -83,7 +84,7 @@ World make_world(const ClothDesc& desc, std::vector<Collider> colliders,
   return {std::move(*sim), *contact};
 }
 
-TriangleMesh cloth_mesh(const ClothSimulator& sim) {
+TriangleMesh sheet_mesh(const ClothSimulator& sim) {
   TriangleMesh mesh;
   for (int i = 0; i < sim.model().particle_count(); ++i)
     mesh.vertices.push_back(sim.state().position(i));
@@ -115,7 +116,7 @@ int run_audited(World& w, int frames, int first = 1) {
     const double t = w.sim.state().time;
     EXPECT_NEAR(t, frame * kFrame, 1e-12);
     EXPECT_EQ(w.contact->collider_points(), collider_points(w.contact->colliders(), t));
-    const TriangleMesh cloth = cloth_mesh(w.sim);
+    const TriangleMesh cloth = sheet_mesh(w.sim);
     for (const Collider& c : w.contact->colliders()) {
       EXPECT_FALSE(testing::meshes_intersect(cloth, surface_at(c, t))) << "frame " << frame;
     }
@@ -253,7 +254,7 @@ TEST(MovingObstacles, AColliderDraggedByHandPushesTheClothWithTheSameGuarantee) 
     for (std::size_t i = 0; i < ball.vertices.size(); ++i)
       points.segment<3>(3 * static_cast<Eigen::Index>(i)) = ball.vertices[i];
     EXPECT_EQ(w.contact->collider_points(), points);
-    EXPECT_FALSE(testing::meshes_intersect(cloth_mesh(w.sim), ball)) << "frame " << frame;
+    EXPECT_FALSE(testing::meshes_intersect(sheet_mesh(w.sim), ball)) << "frame " << frame;
   }
   for (int i = 0; i < w.sim.model().particle_count(); ++i) {
     if (w.sim.model().pinned[i]) {
@@ -283,7 +284,7 @@ TEST(MovingObstacles, AColliderThatCannotGetThroughLeavesTheStepUnconverged) {
     const Eigen::VectorXd points = w.contact->collider_points();
     for (std::size_t i = 0; i < ball.vertices.size(); ++i)
       ball.vertices[i] = points.segment<3>(3 * static_cast<Eigen::Index>(i));
-    EXPECT_FALSE(testing::meshes_intersect(cloth_mesh(w.sim), ball)) << "frame " << frame;
+    EXPECT_FALSE(testing::meshes_intersect(sheet_mesh(w.sim), ball)) << "frame " << frame;
     if (frame >= 2) {  // by then it has reached the sheet
       EXPECT_FALSE(report->converged);
       EXPECT_FALSE(w.contact->settled());

@@ -17,11 +17,12 @@
 #include "animkit/cloth/hessian_pattern.h"
 #include "animkit/cloth/incremental_potential.h"
 #include "animkit/cloth/integrator_registry.h"
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
-constexpr double kFrame = 1.0 / 60.0;
+using testing_support::kFrame;
 
 // The Newton system at the start of a step of a hanging cloth: the cotton scene's parameters
 // (per-particle mass 0.15 kg spread over the grid) on a smaller grid, after `frames` steps.

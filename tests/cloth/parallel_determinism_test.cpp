@@ -20,13 +20,13 @@
 namespace animkit {
 namespace {
 
-struct Scene {
+struct DeterminismScene {
   std::string name;
   GridClothOptions options;
   int steps;
 };
 
-GridClothOptions cotton(int cells) {
+GridClothOptions cotton_grid(int cells) {
   return {
       .cells = cells, .size = 1.0, .gravity = 9.81, .material = find_material("cotton")->material};
 }
@@ -36,7 +36,7 @@ struct ThreadCountGuard {
   ~ThreadCountGuard() { set_thread_count(0); }
 };
 
-ClothState run(const Scene& scene, const IntegratorEntry& entry, int threads) {
+ClothState run(const DeterminismScene& scene, const IntegratorEntry& entry, int threads) {
   set_thread_count(threads);
   // Visually converged steps keep the stiff scenes quick; the loops run the same either way.
   IntegratorSettings settings = entry.defaults;
@@ -56,7 +56,7 @@ bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
          std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
 }
 
-class ParallelDeterminism : public testing::TestWithParam<Scene> {};
+class ParallelDeterminism : public testing::TestWithParam<DeterminismScene> {};
 
 TEST_P(ParallelDeterminism, SameBitsForTheSameAndForAnyThreadCount) {
   const ThreadCountGuard guard;
@@ -76,10 +76,11 @@ TEST_P(ParallelDeterminism, SameBitsForTheSameAndForAnyThreadCount) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, ParallelDeterminism,
-    testing::Values(Scene{"lab", {}, 5}, Scene{"cotton31", cotton(30), 2},
+    testing::Values(DeterminismScene{"lab", {}, 5},
+                    DeterminismScene{"cotton31", cotton_grid(30), 2},
                     // 4,225 particles: above the parallel threshold in every loop.
-                    Scene{"lab65", {.cells = 64}, 2}),
-    [](const testing::TestParamInfo<Scene>& param) { return param.param.name; });
+                    DeterminismScene{"lab65", {.cells = 64}, 2}),
+    [](const testing::TestParamInfo<DeterminismScene>& param) { return param.param.name; });
 
 TEST(ElementSchedule, GridSpringsSplitIntoDisjointBands) {
   const auto built = build_cloth(make_grid_cloth({.cells = 64}));

@@ -8,11 +8,12 @@
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/integrator_registry.h"
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
-constexpr double kFrame = 1.0 / 60.0;
+using testing_support::kFrame;
 
 ClothSimulator simulator(const ClothDesc& desc, const IntegratorSettings& settings) {
   auto sim = ClothSimulator::create(desc, {settings, 1});

@@ -7,11 +7,12 @@
 #include <numbers>
 
 #include "animkit/core/quaternion_math.h"
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using testing_support::kNaN;
 
 // Rodrigues' formula: r turned by `angle` about the unit axis k, written out independently of
 // Eigen's quaternions.

@@ -5,10 +5,12 @@
 #include <limits>
 #include <numbers>
 
+#include "shared_constants.h"
+
 namespace animkit {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using testing_support::kNaN;
 
 ColliderDesc ball() {
   ColliderDesc d;

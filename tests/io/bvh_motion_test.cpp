@@ -6,10 +6,12 @@
 
 #include <filesystem>
 
+#include "shared_constants.h"
+
 namespace animkit {
 namespace {
 
-const std::filesystem::path kWalk = ANIMKIT_TEST_DATA_DIR "/cmu/131_01.bvh";
+using testing_support::kWalk;
 
 TEST(BvhMotion, RoundTripKeepsThePosesOfEveryFrame) {
   ASSERT_TRUE(std::filesystem::exists(kWalk)) << kWalk << " is not here";

@@ -12,12 +12,13 @@
 #include <sstream>
 
 #include "../support/temp_files.h"
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
 // The CMU walk (data/cmu in the repository; tests/CMakeLists.txt: ANIMKIT_TEST_DATA_DIR).
-const std::filesystem::path kWalk = ANIMKIT_TEST_DATA_DIR "/cmu/131_01.bvh";
+using testing_support::kWalk;
 
 // Unusual on purpose: comments, tabs, CRLF, blank lines, a position channel on a non-root
 // joint, rotation orders other than ZXY/ZYX, a joint without rotations, two End Sites.

@@ -14,17 +14,17 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Result<JointLimitSet> parse(const std::string& text) {
+Result<JointLimitSet> parse_limits(const std::string& text) {
   return read_joint_limits(text, "limits.json");
 }
 
-std::string error_of(const std::string& text) {
-  const auto limits = parse(text);
+std::string limits_error_of(const std::string& text) {
+  const auto limits = parse_limits(text);
   return limits ? std::string("(no error)") : limits.error().message;
 }
 
 TEST(JointLimitsFile, ReadsHingeBallAndFreeJointsInRadians) {
-  const auto limits = parse(R"({
+  const auto limits = parse_limits(R"({
     "LeftKnee": {"type": "hinge", "axis": [0, 0, 2], "min": 0, "max": 150},
     "LeftHip": {"type": "ball", "axis": [0, -1, 0], "swing": 80, "twist": [-30, 30]},
     "Neck": {"type": "ball", "axis": [0, 1, 0], "swing": 180},
@@ -56,7 +56,7 @@ TEST(JointLimitsFile, ReadsHingeBallAndFreeJointsInRadians) {
   EXPECT_NEAR(neck.min_twist, -kPi, 1e-15);
   EXPECT_NEAR(neck.max_twist, kPi, 1e-15);
   EXPECT_TRUE(std::holds_alternative<FreeJoint>(limits->at("Spine")));
-  EXPECT_TRUE(parse("{}"));
+  EXPECT_TRUE(parse_limits("{}"));
 }
 
 TEST(JointLimitsFile, EachMistakeIsNamedByItsKey) {
@@ -113,7 +113,7 @@ TEST(JointLimitsFile, EachMistakeIsNamedByItsKey) {
        "limits.json: not valid JSON ("},
   };
   for (const auto& [text, expected] : cases) {
-    const std::string error = error_of(text);
+    const std::string error = limits_error_of(text);
     if (std::string(expected).ends_with("(")) {
       EXPECT_TRUE(error.starts_with(expected)) << text << "\n" << error;
     } else {
@@ -136,7 +136,7 @@ TEST(JointLimitsFile, ReadsAFileAndNamesAMissingOne) {
 }
 
 TEST(JointLimitsFile, BindsLimitsToJointsByNameAndRefusesUnknownNames) {
-  const auto limits = parse(R"({
+  const auto limits = parse_limits(R"({
     "LeftKnee": {"type": "hinge", "axis": [0, 0, 1], "min": 0, "max": 150},
     "LeftHip": {"type": "ball", "axis": [0, -1, 0], "swing": 80}
   })");

@@ -14,6 +14,7 @@
 #include "animkit/io/bvh.h"
 #include "animkit/kinematics/fabrik_tree.h"
 #include "limit_samples.h"
+#include "shared_constants.h"
 #include "tree_ik_checks.h"
 
 namespace animkit {
@@ -24,7 +25,7 @@ using limit_samples::random_rotation;
 using limit_samples::same_bits;
 using limit_samples::uniform;
 
-const std::filesystem::path kWalk = ANIMKIT_TEST_DATA_DIR "/cmu/131_01.bvh";
+using testing_support::kWalk;
 
 // A small humanoid in metres: pelvis root, spine, chest, two 3-bone arms, two 3-bone legs.
 struct Rig {

@@ -11,11 +11,12 @@
 
 #include "animkit/io/bvh.h"
 #include "animkit/io/bvh_motion.h"
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
-const std::filesystem::path kWalk = ANIMKIT_TEST_DATA_DIR "/cmu/131_01.bvh";
+using testing_support::kWalk;
 constexpr double kCmuMetresPerUnit = 0.056444;
 
 TEST(FootLock, MissingLegJointsAreNamed) {

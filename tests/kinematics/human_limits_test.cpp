@@ -9,24 +9,16 @@
 #include "animkit/io/bvh.h"
 #include "animkit/io/bvh_motion.h"
 #include "animkit/kinematics/tree_ik.h"
+#include "cmu_walk.h"
 
 namespace animkit {
 namespace {
 
-struct Walk {
-  Skeleton skeleton;
-  SkeletalMotion motion;
-};
-
-Walk cmu_walk() {
-  auto clip = read_bvh_file(ANIMKIT_TEST_DATA_DIR "/cmu/131_01.bvh", BvhReadOptions{0.056444});
-  EXPECT_TRUE(clip) << (clip ? "" : clip.error().message);
-  // value() throws without the clip, which fails the test (never a read of an empty result).
-  return {build_skeleton(clip.value().skeleton).value(), motion_from_bvh(clip.value())};
-}
+using testing_support::CmuWalk;
+using testing_support::load_cmu_walk;
 
 TEST(HumanLimits, KneesAndElbowsAreHingesRootsFreeTheRestBalls) {
-  const Walk walk = cmu_walk();
+  const CmuWalk walk = load_cmu_walk();
   const Skeleton& s = walk.skeleton;
   const auto limits = human_joint_limits(s);
   ASSERT_EQ(static_cast<int>(limits.size()), s.joint_count());
@@ -50,7 +42,7 @@ Vec3 shin_tip(const Skeleton& s, int knee, const Quat& q) {
 }
 
 TEST(HumanLimits, KneesBendBackOnlyAndElbowsForwardOnly) {
-  const Walk walk = cmu_walk();
+  const CmuWalk walk = load_cmu_walk();
   const Skeleton& s = walk.skeleton;
   const auto limits = human_joint_limits(s);
   for (const char* name : {"LeftKnee", "RightKnee", "LeftElbow", "RightElbow"}) {
@@ -108,7 +100,7 @@ TEST(HumanLimits, FittingFindsTheAxisAClipBendsAHingeAbout) {
 TEST(HumanLimits, TheCapturedWalkStaysNearlyInsideOnceTheHingesAreFitted) {
   // How far the CMU walk itself goes past these rough limits, printed (a solver starting
   // from a captured frame first moves it inside them).
-  const Walk walk = cmu_walk();
+  const CmuWalk walk = load_cmu_walk();
   const Skeleton& s = walk.skeleton;
   auto limits = human_joint_limits(s);
   ASSERT_FALSE(fit_hinge_axes(s, walk.motion, limits));

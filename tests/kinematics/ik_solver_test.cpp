@@ -9,11 +9,12 @@
 #include "animkit/kinematics/drawing_session.h"
 #include "animkit/kinematics/forward_kinematics.h"
 #include "animkit/trajectory/lab_shapes.h"
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using testing_support::kNaN;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 class IkSolverTest : public testing::TestWithParam<IkSolverKind> {

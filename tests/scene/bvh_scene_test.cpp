@@ -9,27 +9,16 @@
 #include "animkit/io/bvh_motion.h"
 #include "animkit/kinematics/human_limits.h"
 #include "animkit/scene/skeleton_drawing.h"
+#include "cmu_walk.h"
 
 namespace animkit {
 namespace {
 
-constexpr double kCmuScale = 0.056444;  // metres per unit of CMU's BVH files
-
-struct Walk {
-  Skeleton skeleton;
-  SkeletalMotion motion;
-};
-
-Walk cmu_walk() {
-  const std::filesystem::path path = ANIMKIT_TEST_DATA_DIR "/cmu/131_01.bvh";
-  auto clip = read_bvh_file(path, BvhReadOptions{kCmuScale});
-  EXPECT_TRUE(clip) << (clip ? "" : clip.error().message);
-  // value() throws without the clip, which fails the test (never a read of an empty result).
-  return {build_skeleton(clip.value().skeleton).value(), motion_from_bvh(clip.value())};
-}
+using testing_support::CmuWalk;
+using testing_support::load_cmu_walk;
 
 BvhScene walk_scene(const BvhSceneOptions& options = {}) {
-  Walk walk = cmu_walk();
+  CmuWalk walk = load_cmu_walk();
   auto scene = BvhScene::create(std::move(walk.skeleton), std::move(walk.motion), {}, options);
   EXPECT_TRUE(scene) << (scene ? "" : scene.error().message);
   return std::move(scene.value());
@@ -189,7 +178,7 @@ TEST(BvhScene, WithoutLegsThereIsNoFootLockAndTheSceneStillPlays) {
 }
 
 TEST(BvhScene, RefusesAMotionOrLimitsThatDoNotFit) {
-  Walk walk = cmu_walk();
+  CmuWalk walk = load_cmu_walk();
   SkeletalMotion wrong = make_motion(3, 2, 0.1);
   auto a = BvhScene::create(walk.skeleton, wrong, {});
   ASSERT_FALSE(a);

@@ -13,8 +13,8 @@ namespace animkit::testing_support {
 /// An empty folder `name` under the test temporary directory (created, emptied first). The
 /// process id in its path keeps concurrent test runs (release and sanitizer) apart.
 inline std::filesystem::path fresh_dir(const std::string& name) {
-  const std::filesystem::path dir =
-      std::filesystem::path(testing::TempDir()) / ("animkit_" + std::to_string(::getpid())) / name;
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
+                                    ("animkit_" + std::to_string(::getpid())) / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
