@@ -12,7 +12,7 @@
 namespace animkit::viewer {
 
 namespace {
-constexpr double kGrabRadiusPx = 12.0;
+constexpr double kBvhGrabRadiusPx = 12.0;
 
 int find_named(const Skeleton& skeleton, const std::string& name, const std::string& what,
                std::string& error) {
@@ -156,7 +156,7 @@ void BvhView::panel() {
 
 bool BvhView::press(const Cursor& cursor) {
   const int joint = scene_.pick_joint(*cursor.camera, cursor.x, cursor.y, cursor.view_width,
-                                      cursor.view_height, kGrabRadiusPx);
+                                      cursor.view_height, kBvhGrabRadiusPx);
   if (joint < 0) return false;
   scene_.select(joint);
   dragged_ = joint;

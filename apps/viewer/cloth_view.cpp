@@ -15,7 +15,7 @@
 namespace animkit::viewer {
 
 namespace {
-constexpr double kGrabRadiusPx = 12.0;
+constexpr double kClothGrabRadiusPx = 12.0;
 
 // The total energy of the last steps as a line, with its range written in the corners, so a
 // user sees damping take energy out (or a bad setting pump it in).
@@ -249,7 +249,7 @@ void ClothView::panel() {
 
 bool ClothView::press(const Cursor& cursor) {
   const ClothPick pick = scene_.pick_handle(*cursor.camera, cursor.x, cursor.y, cursor.view_width,
-                                            cursor.view_height, kGrabRadiusPx);
+                                            cursor.view_height, kClothGrabRadiusPx);
   if (pick.collider) {
     scene_.grab_collider(*pick.collider);
     collider_grabbed_ = true;

@@ -5,7 +5,7 @@
 namespace animkit::viewer {
 
 namespace {
-constexpr double kGrabRadiusPx = 16.0;
+constexpr double kIkGrabRadiusPx = 16.0;
 }  // namespace
 
 IkView::IkView(IkScene scene, std::vector<Entry> entries, int selected, DrawingLayout layout,
@@ -152,7 +152,7 @@ void IkView::panel() {
 bool IkView::press(const Cursor& cursor) {
   const auto tip =
       cursor.camera->project(scene_.pose().end_effector(), cursor.view_width, cursor.view_height);
-  if (!tip || std::hypot(tip->x() - cursor.x, tip->y() - cursor.y) > kGrabRadiusPx) return false;
+  if (!tip || std::hypot(tip->x() - cursor.x, tip->y() - cursor.y) > kIkGrabRadiusPx) return false;
   dragging_ = true;
   playing_ = false;
   follow_cursor(cursor);

@@ -23,6 +23,7 @@
 #include "animkit/trajectory/trajectory.h"
 #include "bind_kin_common.h"
 #include "bindings.h"
+#include "cloth_convert.h"
 #include "numpy_convert.h"
 #include "python_errors.h"
 
@@ -179,14 +180,15 @@ std::optional<Eigen::AlignedBox2d> to_frame(const py::object& value) {
 // ---- classes ---------------------------------------------------------------------------------
 
 std::string stats_repr(const SpacingStats& s) {
-  return "SpacingStats(segments=" + std::to_string(s.segments) + ", mean=" + float_repr(s.mean) +
-         ", min=" + float_repr(s.min) + ", max=" + float_repr(s.max) + ", cv=" + float_repr(s.cv) +
-         ")";
+  return "SpacingStats(segments=" + std::to_string(s.segments) + ", mean=" + repr_number(s.mean) +
+         ", min=" + repr_number(s.min) + ", max=" + repr_number(s.max) +
+         ", cv=" + repr_number(s.cv) + ")";
 }
 
 std::string box_repr(const DrawingBox& b) {
-  return "DrawingBox(center_x=" + float_repr(b.center_x) + ", center_z=" + float_repr(b.center_z) +
-         ", half_extent=" + float_repr(b.half_extent) + ")";
+  return "DrawingBox(center_x=" + repr_number(b.center_x) +
+         ", center_z=" + repr_number(b.center_z) + ", half_extent=" + repr_number(b.half_extent) +
+         ")";
 }
 
 Trajectory make_trajectory(const py::object& targets, const py::object& pen_down) {

@@ -29,9 +29,6 @@ struct PyDrawingRun {
   std::vector<Vec3> chain_offsets;  ///< the chain's local offsets, for final_pose
 };
 
-/// Python's repr of a float ("0.0001", "2.6"), for __repr__ texts.
-std::string float_repr(double value);
-
 /// A 1-D numpy array of `values` (a copy).
 template <class T>
 pybind11::array_t<T> to_array(std::span<const T> values) {

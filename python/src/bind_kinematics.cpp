@@ -15,16 +15,13 @@
 #include "animkit/kinematics/ik_solver.h"
 #include "bind_kin_common.h"
 #include "bindings.h"
+#include "cloth_convert.h"
 #include "numpy_convert.h"
 #include "python_errors.h"
 
 namespace animkit::python {
 
 namespace py = pybind11;
-
-std::string float_repr(double value) {
-  return py::repr(py::float_(value)).cast<std::string>();
-}
 
 py::array_t<bool> pen_flags_to_array(std::span<const char> flags) {
   py::array_t<bool> array(static_cast<py::ssize_t>(flags.size()));
@@ -42,7 +39,7 @@ struct PyIkResult {
 };
 
 std::string vec3_repr(const Vec3& v) {
-  return "(" + float_repr(v.x()) + ", " + float_repr(v.y()) + ", " + float_repr(v.z()) + ")";
+  return "(" + repr_number(v.x()) + ", " + repr_number(v.y()) + ", " + repr_number(v.z()) + ")";
 }
 
 std::string bool_repr(bool value) {
@@ -167,15 +164,15 @@ py::array_t<double> joint_positions_array(const DrawingRun& run) {
 
 std::string summary_repr(const DrawingSummary& s) {
   return "DrawingSummary(targets=" + std::to_string(s.targets) +
-         ", converged_fraction=" + float_repr(s.converged_fraction) +
+         ", converged_fraction=" + repr_number(s.converged_fraction) +
          ", unreachable_targets=" + std::to_string(s.unreachable_targets) +
-         ", iterations_mean=" + float_repr(s.iterations_mean) +
-         ", iterations_median=" + float_repr(s.iterations_median) +
+         ", iterations_mean=" + repr_number(s.iterations_mean) +
+         ", iterations_median=" + repr_number(s.iterations_median) +
          ", iterations_max=" + std::to_string(s.iterations_max) +
-         ", error_mean=" + float_repr(s.error_mean) + ", error_max=" + float_repr(s.error_max) +
-         ", max_joint_step_rad=" + float_repr(s.max_joint_step_rad) +
-         ", solve_time_us_median=" + float_repr(s.solve_time_us_median) +
-         ", solve_time_us_mean=" + float_repr(s.solve_time_us_mean) + ")";
+         ", error_mean=" + repr_number(s.error_mean) + ", error_max=" + repr_number(s.error_max) +
+         ", max_joint_step_rad=" + repr_number(s.max_joint_step_rad) +
+         ", solve_time_us_median=" + repr_number(s.solve_time_us_median) +
+         ", solve_time_us_mean=" + repr_number(s.solve_time_us_mean) + ")";
 }
 
 void bind_chain(py::module_& m) {
@@ -229,7 +226,7 @@ void bind_chain(py::module_& m) {
           "(n, 4) rest rotations (w, x, y, z), each relative to its parent, unit length.")
       .def("__repr__", [](const Chain& c) {
         return "Chain(joint_count=" + std::to_string(c.joint_count()) +
-               ", reach=" + float_repr(c.reach()) +
+               ", reach=" + repr_number(c.reach()) +
                ", root_position=" + vec3_repr(c.root_position()) + ")";
       });
 }
@@ -296,7 +293,7 @@ void bind_solve(py::module_& m) {
           "The solved Pose; pass it as the next solve's `pose` to warm-start.")
       .def("__repr__", [](const PyIkResult& r) {
         return "IkResult(iterations=" + std::to_string(r.result.iterations) +
-               ", error=" + float_repr(r.result.error) +
+               ", error=" + repr_number(r.result.error) +
                ", converged=" + bool_repr(r.result.converged) +
                ", reachable=" + bool_repr(r.result.reachable) + ")";
       });
@@ -500,8 +497,8 @@ void bind_drawing_run(py::module_& m) {
         return "DrawingRun(solver='" + std::string(to_string(r.options.solver)) +
                "', frames=" + std::to_string(r.run.frames.size()) +
                ", laps=" + std::to_string(r.options.laps) +
-               ", converged_fraction=" + float_repr(s.converged_fraction) +
-               ", iterations_mean=" + float_repr(s.iterations_mean) + ")";
+               ", converged_fraction=" + repr_number(s.converged_fraction) +
+               ", iterations_mean=" + repr_number(s.iterations_mean) + ")";
       });
 
   const IkOptions ik_defaults;

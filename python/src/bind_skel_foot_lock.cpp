@@ -5,6 +5,7 @@
 #include <string>
 
 #include "animkit/kinematics/foot_lock.h"
+#include "cloth_convert.h"
 #include "numpy_convert.h"
 #include "python_errors.h"
 #include "skel_bindings.h"
@@ -20,10 +21,6 @@ struct PyFootLockResult {
   int frames = 0;
 };
 
-std::string num(double value) {
-  return std::string(py::repr(py::float_(value)));
-}
-
 KneePole knee_pole_of(const std::string& text) {
   const auto pole = parse_knee_pole(text);
   if (!pole) {
@@ -33,32 +30,32 @@ KneePole knee_pole_of(const std::string& text) {
 }
 
 std::string settings_repr(const FootLockSettings& s) {
-  return "FootLockSettings(height_threshold=" + num(s.height_threshold) +
-         ", speed_threshold=" + num(s.speed_threshold) +
+  return "FootLockSettings(height_threshold=" + repr_number(s.height_threshold) +
+         ", speed_threshold=" + repr_number(s.speed_threshold) +
          ", min_contact_frames=" + std::to_string(s.min_contact_frames) +
          ", merge_gap_frames=" + std::to_string(s.merge_gap_frames) +
          ", blend_frames=" + std::to_string(s.blend_frames) +
-         ", min_knee_flexion=" + num(s.min_knee_flexion) +
-         ", max_knee_flexion=" + num(s.max_knee_flexion) + ", knee_pole='" +
-         std::string(to_string(s.knee_pole)) + "', soft_reach=" + num(s.soft_reach) + ")";
+         ", min_knee_flexion=" + repr_number(s.min_knee_flexion) +
+         ", max_knee_flexion=" + repr_number(s.max_knee_flexion) + ", knee_pole='" +
+         std::string(to_string(s.knee_pole)) + "', soft_reach=" + repr_number(s.soft_reach) + ")";
 }
 
 std::string metrics_repr(const FootLockMetrics& m) {
   return "FootLockMetrics(contacts=(" + std::to_string(m.contacts[0]) + ", " +
          std::to_string(m.contacts[1]) + "), planted_frames=(" +
          std::to_string(m.planted_frames[0]) + ", " + std::to_string(m.planted_frames[1]) +
-         "), slide_before_mean_cm=" + num(m.slide_before_mean_cm) +
-         ", slide_before_max_cm=" + num(m.slide_before_max_cm) +
-         ", slide_after_mean_cm=" + num(m.slide_after_mean_cm) +
-         ", slide_after_max_cm=" + num(m.slide_after_max_cm) +
-         ", ik_error_mean_cm=" + num(m.ik_error_mean_cm) +
-         ", ik_error_max_cm=" + num(m.ik_error_max_cm) +
-         ", max_joint_step_before_cm=" + num(m.max_joint_step_before_cm) +
-         ", max_joint_step_after_cm=" + num(m.max_joint_step_after_cm) +
-         ", max_leg_step_before_cm=" + num(m.max_leg_step_before_cm) +
-         ", max_leg_step_after_cm=" + num(m.max_leg_step_after_cm) +
-         ", max_correction_step_cm=" + num(m.max_correction_step_cm) +
-         ", ms_per_frame=" + num(m.ms_per_frame) + ")";
+         "), slide_before_mean_cm=" + repr_number(m.slide_before_mean_cm) +
+         ", slide_before_max_cm=" + repr_number(m.slide_before_max_cm) +
+         ", slide_after_mean_cm=" + repr_number(m.slide_after_mean_cm) +
+         ", slide_after_max_cm=" + repr_number(m.slide_after_max_cm) +
+         ", ik_error_mean_cm=" + repr_number(m.ik_error_mean_cm) +
+         ", ik_error_max_cm=" + repr_number(m.ik_error_max_cm) +
+         ", max_joint_step_before_cm=" + repr_number(m.max_joint_step_before_cm) +
+         ", max_joint_step_after_cm=" + repr_number(m.max_joint_step_after_cm) +
+         ", max_leg_step_before_cm=" + repr_number(m.max_leg_step_before_cm) +
+         ", max_leg_step_after_cm=" + repr_number(m.max_leg_step_after_cm) +
+         ", max_correction_step_cm=" + repr_number(m.max_correction_step_cm) +
+         ", ms_per_frame=" + repr_number(m.ms_per_frame) + ")";
 }
 
 /// The legs a user names: ((hip, knee, ankle), (hip, knee, ankle)) for left and right, each
@@ -278,8 +275,8 @@ void bind_skel_foot_lock(py::module_& m) {
         return "FootLockResult(frames=" + std::to_string(r.frames) + ", contacts=(" +
                std::to_string(r.result.metrics.contacts[0]) + ", " +
                std::to_string(r.result.metrics.contacts[1]) +
-               "), slide_cm=" + num(r.result.metrics.slide_before_mean_cm) + " -> " +
-               num(r.result.metrics.slide_after_mean_cm) + ")";
+               "), slide_cm=" + repr_number(r.result.metrics.slide_before_mean_cm) + " -> " +
+               repr_number(r.result.metrics.slide_after_mean_cm) + ")";
       });
 
   m.def("lock_feet", &run_lock, py::arg("skeleton"), py::arg("motion"),

@@ -9,6 +9,7 @@
 
 #include "animkit/io/joint_limits_file.h"
 #include "animkit/kinematics/human_limits.h"
+#include "cloth_convert.h"
 #include "numpy_convert.h"
 #include "python_errors.h"
 #include "skel_bindings.h"
@@ -26,12 +27,8 @@ Vec3 unit_axis(const py::object& value, std::string_view what) {
   return axis;
 }
 
-std::string num(double value) {
-  return std::string(py::repr(py::float_(value)));
-}
-
 std::string vec_repr(const Vec3& v) {
-  return "(" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + ")";
+  return "(" + repr_number(v.x()) + ", " + repr_number(v.y()) + ", " + repr_number(v.z()) + ")";
 }
 
 JointLimit to_limit(const py::object& value, std::string_view what) {
@@ -116,8 +113,8 @@ void bind_skel_limits(py::module_& m) {
           "validate", [](const HingeLimit& h) { check(h.validate()); },
           "Raises animkit.Error naming the first problem, if any.")
       .def("__repr__", [](const HingeLimit& h) {
-        return "HingeLimit(axis=" + vec_repr(h.axis) + ", min_angle=" + num(h.min_angle) +
-               ", max_angle=" + num(h.max_angle) + ")";
+        return "HingeLimit(axis=" + vec_repr(h.axis) + ", min_angle=" + repr_number(h.min_angle) +
+               ", max_angle=" + repr_number(h.max_angle) + ")";
       });
 
   py::class_<BallLimit>(m, "BallLimit",
@@ -165,9 +162,12 @@ void bind_skel_limits(py::module_& m) {
           "Raises animkit.Error naming the first problem, if any.")
       .def("__repr__", [](const BallLimit& b) {
         return "BallLimit(twist_axis=" + vec_repr(b.twist_axis) +
-               ", swing_angle=" + num(b.swing_angle) + ", min_twist=" + num(b.min_twist) +
-               ", max_twist=" + num(b.max_twist) + ", swing_axis=" + vec_repr(b.swing_axis) +
-               ", swing_angle_2=" + (b.swing_angle_2 ? num(*b.swing_angle_2) : "None") + ")";
+               ", swing_angle=" + repr_number(b.swing_angle) +
+               ", min_twist=" + repr_number(b.min_twist) +
+               ", max_twist=" + repr_number(b.max_twist) +
+               ", swing_axis=" + vec_repr(b.swing_axis) +
+               ", swing_angle_2=" + (b.swing_angle_2 ? repr_number(*b.swing_angle_2) : "None") +
+               ")";
       });
 
   m.def(

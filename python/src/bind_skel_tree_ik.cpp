@@ -9,6 +9,7 @@
 
 #include "animkit/kinematics/tree_ik_solver.h"
 #include "animkit/kinematics/two_bone_ik.h"
+#include "cloth_convert.h"
 #include "numpy_convert.h"
 #include "python_errors.h"
 #include "skel_bindings.h"
@@ -16,10 +17,6 @@
 namespace animkit::python {
 
 namespace {
-
-std::string num(double value) {
-  return std::string(py::repr(py::float_(value)));
-}
 
 /// An effector as the user writes it: the joint by index or by name, resolved at solve time.
 struct PyEffector {
@@ -200,16 +197,16 @@ void bind_skel_tree_ik(py::module_& m) {
                                       ? std::to_string(std::get<int>(e.joint))
                                       : "'" + std::get<std::string>(e.joint) + "'";
         const Vec3& p = e.position;
-        std::string text = "Effector(joint=" + joint + ", position=(" + num(p.x()) + ", " +
-                           num(p.y()) + ", " + num(p.z()) + "), orientation=";
+        std::string text = "Effector(joint=" + joint + ", position=(" + repr_number(p.x()) + ", " +
+                           repr_number(p.y()) + ", " + repr_number(p.z()) + "), orientation=";
         if (e.orientation) {
           const Quat& q = *e.orientation;
-          text +=
-              "(" + num(q.w()) + ", " + num(q.x()) + ", " + num(q.y()) + ", " + num(q.z()) + ")";
+          text += "(" + repr_number(q.w()) + ", " + repr_number(q.x()) + ", " + repr_number(q.y()) +
+                  ", " + repr_number(q.z()) + ")";
         } else {
           text += "None";
         }
-        return text + ", weight=" + num(e.weight) + ")";
+        return text + ", weight=" + repr_number(e.weight) + ")";
       });
 
   py::class_<PyTreeIkResult>(m, "TreeIkResult", "What a tree IK solve did, and its pose.")
@@ -235,8 +232,8 @@ void bind_skel_tree_ik(py::module_& m) {
       .def("__repr__", [](const PyTreeIkResult& r) {
         return "TreeIkResult(iterations=" + std::to_string(r.result.iterations) +
                ", finish_iterations=" + std::to_string(r.result.finish_iterations) +
-               ", error=" + num(r.result.error) +
-               ", orientation_error=" + num(r.result.orientation_error) +
+               ", error=" + repr_number(r.result.error) +
+               ", orientation_error=" + repr_number(r.result.orientation_error) +
                ", converged=" + (r.result.converged ? "True" : "False") +
                ", reachable=" + (r.result.reachable ? "True" : "False") + ")";
       });
@@ -284,7 +281,7 @@ void bind_skel_tree_ik(py::module_& m) {
         return "TreeIkSolver(solver='" + std::string(to_string(s.kind)) +
                "', joint_count=" + std::to_string(s.skeleton.joint_count()) +
                ", max_iterations=" + std::to_string(s.solvers.ccd.max_iterations) +
-               ", tolerance=" + num(s.solvers.ccd.tolerance) + ")";
+               ", tolerance=" + repr_number(s.solvers.ccd.tolerance) + ")";
       });
 
   m.def(
@@ -321,7 +318,7 @@ void bind_skel_tree_ik(py::module_& m) {
       .def_readonly("error", &TwoBoneResult::error, "|end - target| (scene units).")
       .def("__repr__", [](const TwoBoneResult& r) {
         return std::string("TwoBoneResult(reached=") + (r.reached ? "True" : "False") +
-               ", error=" + num(r.error) + ")";
+               ", error=" + repr_number(r.error) + ")";
       });
 
   m.def(

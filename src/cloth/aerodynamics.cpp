@@ -5,14 +5,11 @@
 #include <string>
 
 #include "animkit/core/validation.h"
+#include "stacked_vectors.h"
 
 namespace animkit {
 
 namespace {
-
-Vec3 at(const Eigen::VectorXd& x, int i) {
-  return x.segment<3>(3 * i);
-}
 
 // The gust factor in [0, 1]: two sinusoids of incommensurate frequencies (ratio 2.17), so the
 // gusts never repeat exactly, with amplitudes summing to 1.

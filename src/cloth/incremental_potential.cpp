@@ -8,14 +8,9 @@
 #include "../core/parallel.h"
 #include "animkit/cloth/bend_energy.h"
 #include "animkit/cloth/spring_energy.h"
+#include "stacked_vectors.h"
 
 namespace animkit {
-
-namespace {
-Vec3 at(const Eigen::VectorXd& v, int i) {
-  return v.segment<3>(3 * i);
-}
-}  // namespace
 
 IncrementalPotential::IncrementalPotential(const ClothModel& model)
     : model_(model),

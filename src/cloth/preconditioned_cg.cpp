@@ -1,6 +1,7 @@
 #include "animkit/cloth/preconditioned_cg.h"
 
 #include "../core/parallel.h"
+#include "stacked_vectors.h"
 
 namespace animkit {
 
@@ -9,10 +10,6 @@ namespace {
 using Acc = std::array<double, 1>;
 
 // The vectors hold 3 coordinates per particle; loops run per particle.
-Eigen::Vector3d at(const Eigen::VectorXd& v, int i) {
-  return v.segment<3>(3 * i);
-}
-
 double dot(const Eigen::VectorXd& u, const Eigen::VectorXd& v, CgWorkspace& w) {
   const int n = static_cast<int>(u.size() / 3);
   return parallel::sum<1>(n, w.partials,

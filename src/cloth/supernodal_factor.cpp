@@ -7,11 +7,11 @@ namespace animkit {
 
 namespace {
 
-using Vec3 = std::array<double, 3>;
+using Triple = std::array<double, 3>;
 
 // sum_c l[c] (y[3c], y[3c + 1], y[3c + 2]), over four interleaved partial sums per coordinate:
 // one chain of dependent additions would make the loop wait on the adder's latency.
-Vec3 dot3(const double* l, const double* y, int n) {
+Triple dot3(const double* l, const double* y, int n) {
   double a[4][3] = {};
   int c = 0;
   for (; c + 4 <= n; c += 4) {
@@ -96,10 +96,10 @@ void SupernodalFactor::solve(double* x) const {
     const int* rows = rows_.data() + s.rows_begin;
     for (int k = 0; k < s.row_count; ++k) {
       double* xi = x + 3 * rows[k];
-      const Vec3 sum = dot3(rectangle + k * w, block, w);
-      xi[0] -= sum[0];
-      xi[1] -= sum[1];
-      xi[2] -= sum[2];
+      const Triple dot = dot3(rectangle + k * w, block, w);
+      xi[0] -= dot[0];
+      xi[1] -= dot[1];
+      xi[2] -= dot[2];
     }
   }
   // L^T x = y, supernodes in reverse: x_block -= L_rows,block^T x_rows, then the triangle.
@@ -121,11 +121,11 @@ void SupernodalFactor::solve(double* x) const {
       }
     }
     for (int c = w - 1; c >= 0; --c) {
-      const Vec3 sum = dot3(triangle + c + 1 + w * c, block + 3 * (c + 1), w - c - 1);
+      const Triple dot = dot3(triangle + c + 1 + w * c, block + 3 * (c + 1), w - c - 1);
       const double d = 1.0 / triangle[c + w * c];
-      block[3 * c] = (block[3 * c] - sum[0]) * d;
-      block[3 * c + 1] = (block[3 * c + 1] - sum[1]) * d;
-      block[3 * c + 2] = (block[3 * c + 2] - sum[2]) * d;
+      block[3 * c] = (block[3 * c] - dot[0]) * d;
+      block[3 * c + 1] = (block[3 * c + 1] - dot[1]) * d;
+      block[3 * c + 2] = (block[3 * c + 2] - dot[2]) * d;
     }
   }
 }

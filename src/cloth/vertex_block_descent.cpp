@@ -10,16 +10,9 @@
 #include "animkit/cloth/implicit_substep.h"
 #include "animkit/cloth/spring_energy.h"
 #include "animkit/core/validation.h"
+#include "stacked_vectors.h"
 
 namespace animkit {
-
-namespace {
-
-Vec3 at(const Eigen::VectorXd& v, int i) {
-  return v.segment<3>(3 * i);
-}
-
-}  // namespace
 
 std::optional<Error> VbdSettings::validate() const {
   if (!std::isfinite(tolerance) || tolerance <= 0.0 || tolerance >= 1.0) {

@@ -9,11 +9,6 @@
 namespace animkit {
 
 namespace {
-
-// How far |q| may be from 1 before a rotation is refused: far above the rounding of a
-// normalized quaternion written with 9 digits, far below a user's mistake.
-constexpr double kUnitTolerance = 1e-6;
-
 std::optional<Error> check_rotation(const Quat& q, const std::string& what) {
   if (!is_finite(q)) return Error{what + " has a non-finite component"};
   const double norm = q.norm();

@@ -63,7 +63,7 @@ void progress_monitor(j_common_ptr cinfo) {
   }
 }
 
-enum class Outcome { decoded, failed, too_large };
+enum class JpegOutcome { decoded, failed, too_large };
 
 // Adobe's CMYK JPEGs store the inks inverted (255 = no ink), other writers do not.
 std::uint8_t cmyk_channel(int c, int k, bool inverted) {
@@ -76,16 +76,16 @@ std::uint8_t cmyk_channel(int c, int k, bool inverted) {
 
 // From the header to the end of the image, into `out` as 8-bit RGBA. Nothing in this frame
 // has a destructor (see JpegErrors).
-Outcome run_libjpeg(jpeg_decompress_struct* cinfo, JpegErrors* errors, jpeg_progress_mgr* progress,
+JpegOutcome run_libjpeg(jpeg_decompress_struct* cinfo, JpegErrors* errors, jpeg_progress_mgr* progress,
                     std::span<const std::uint8_t> data, Image* out) {
-  if (setjmp(errors->jump)) return Outcome::failed;
+  if (setjmp(errors->jump)) return JpegOutcome::failed;
   jpeg_create_decompress(cinfo);
   cinfo->progress = progress;
   jpeg_mem_src(cinfo, data.data(), static_cast<unsigned long>(data.size()));
   jpeg_read_header(cinfo, TRUE);
   if (cinfo->image_width > JDIMENSION(kMaxImageSide) ||
       cinfo->image_height > JDIMENSION(kMaxImageSide)) {
-    return Outcome::too_large;
+    return JpegOutcome::too_large;
   }
   const bool cmyk = cinfo->jpeg_color_space == JCS_CMYK || cinfo->jpeg_color_space == JCS_YCCK;
   cinfo->out_color_space = cmyk ? JCS_CMYK : JCS_EXT_RGBA;
@@ -108,7 +108,7 @@ Outcome run_libjpeg(jpeg_decompress_struct* cinfo, JpegErrors* errors, jpeg_prog
     }
   }
   jpeg_finish_decompress(cinfo);  // reads to EOI, where garbage left in the data shows
-  return Outcome::decoded;
+  return JpegOutcome::decoded;
 }
 
 }  // namespace
@@ -125,16 +125,16 @@ Result<Image> decode_jpeg(std::span<const std::uint8_t> bytes, std::string_view 
   jpeg_progress_mgr progress{};
   progress.progress_monitor = progress_monitor;
   Image image;
-  const Outcome outcome = run_libjpeg(&cinfo, &errors, &progress, bytes, &image);
+  const JpegOutcome outcome = run_libjpeg(&cinfo, &errors, &progress, bytes, &image);
   const JDIMENSION width = cinfo.image_width, height = cinfo.image_height;
   jpeg_destroy_decompress(&cinfo);
   switch (outcome) {
-    case Outcome::decoded:
+    case JpegOutcome::decoded:
       return image;
-    case Outcome::too_large:
+    case JpegOutcome::too_large:
       if (auto ok = check_image_side(width, height, name); !ok) return fail(ok.error().message);
       return fail(std::string(name) + ": the image is too large");
-    case Outcome::failed:
+    case JpegOutcome::failed:
       break;
   }
   if (errors.too_many_scans) {

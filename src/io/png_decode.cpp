@@ -55,20 +55,20 @@ void warning_callback(png_structp png, png_const_charp message) {
   }
 }
 
-enum class Outcome { decoded, failed, too_large };
+enum class PngOutcome { decoded, failed, too_large };
 
 // Runs libpng from the signature to IEND, into `out` as 8-bit RGBA. Nothing in this frame has
 // a destructor (see PngState). IEND is read too, so a file cut after its pixels still fails.
-Outcome run_libpng(png_structp png, png_infop info, Image* out, png_uint_32* width,
+PngOutcome run_libpng(png_structp png, png_infop info, Image* out, png_uint_32* width,
                    png_uint_32* height) {
-  if (setjmp(png_jmpbuf(png))) return Outcome::failed;
+  if (setjmp(png_jmpbuf(png))) return PngOutcome::failed;
   png_set_user_limits(png, kMaxImageSide, kMaxImageSide);
   png_set_chunk_malloc_max(png, 8u << 20);  // text or profile chunks are small
   png_read_info(png, info);
   int bit_depth = 0, color_type = 0;
   png_get_IHDR(png, info, width, height, &bit_depth, &color_type, nullptr, nullptr, nullptr);
   if (*width > png_uint_32{kMaxImageSide} || *height > png_uint_32{kMaxImageSide}) {
-    return Outcome::too_large;
+    return PngOutcome::too_large;
   }
   if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
   if (color_type == PNG_COLOR_TYPE_GRAY && bit_depth < 8) png_set_expand_gray_1_2_4_to_8(png);
@@ -90,7 +90,7 @@ Outcome run_libpng(png_structp png, png_infop info, Image* out, png_uint_32* wid
     }
   }
   png_read_end(png, nullptr);
-  return Outcome::decoded;
+  return PngOutcome::decoded;
 }
 
 std::uint32_t big_endian(const std::uint8_t* b) {
@@ -121,17 +121,17 @@ Result<Image> decode_png(std::span<const std::uint8_t> bytes, std::string_view n
   png_set_read_fn(png, &state, read_callback);
   Image image;
   png_uint_32 width = 0, height = 0;
-  const Outcome outcome = run_libpng(png, info, &image, &width, &height);
+  const PngOutcome outcome = run_libpng(png, info, &image, &width, &height);
   png_destroy_read_struct(&png, &info, nullptr);
   switch (outcome) {
-    case Outcome::decoded:
+    case PngOutcome::decoded:
       if (state.damage[0] != '\0')
         return corrupt(name, "PNG", std::string("libpng: ") + state.damage);
       return image;
-    case Outcome::too_large:
+    case PngOutcome::too_large:
       if (auto ok = check_image_side(width, height, name); !ok) return fail(ok.error().message);
       return fail(std::string(name) + ": the image is too large");
-    case Outcome::failed:
+    case PngOutcome::failed:
       break;
   }
   if (state.ran_out) {

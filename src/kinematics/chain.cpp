@@ -9,13 +9,6 @@
 
 namespace animkit {
 
-namespace {
-// Bones shorter than this are treated as zero length: their direction is undefined.
-constexpr double kMinBoneLength = 1e-9;
-// How far |q| may stray from 1 before a rotation is rejected as not unit.
-constexpr double kUnitTolerance = 1e-6;
-}  // namespace
-
 ChainDesc ChainDesc::from_rest_positions(std::span<const Vec3> world_positions) {
   ChainDesc desc;
   desc.local_offsets.reserve(world_positions.size());

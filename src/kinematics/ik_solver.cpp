@@ -159,10 +159,10 @@ void prefer_straight_if_nearer(const Chain& chain, Pose& pose, const Vec3& targe
 }
 
 Quat stall_kick(const Chain& chain, const Pose& pose, const Vec3& target) {
-  constexpr double kKickAngle = 0.2;
+  constexpr double kStallKickAngle = 0.2;
   Vec3 line = target - chain.root_position();
   if (line.squaredNorm() == 0.0) line = pose.end_effector() - chain.root_position();
-  return Quat(Eigen::AngleAxisd(kKickAngle, perpendicular_axis(line)));
+  return Quat(Eigen::AngleAxisd(kStallKickAngle, perpendicular_axis(line)));
 }
 
 IkResult point_chain_at(const Chain& chain, Pose& pose, const Vec3& target,

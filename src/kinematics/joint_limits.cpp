@@ -12,10 +12,7 @@
 namespace animkit {
 
 namespace {
-
 constexpr double kPi = std::numbers::pi;
-// How far a limit's axis may stray from unit length (as for a chain's rotations).
-constexpr double kUnitTolerance = 1e-6;
 
 std::optional<Error> check_axis(const char* what, const Vec3& axis) {
   if (!is_finite(axis)) return Error{std::string(what) + " has a non-finite coordinate"};

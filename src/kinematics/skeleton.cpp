@@ -10,9 +10,6 @@
 namespace animkit {
 
 namespace {
-// How far |q| may stray from 1 before a rotation is rejected as not unit (as for chains).
-constexpr double kUnitTolerance = 1e-6;
-
 std::string joint_label(const SkeletonDesc& desc, std::size_t i) {
   std::string label = "joint " + std::to_string(i);
   if (i < desc.names.size() && !desc.names[i].empty()) label += " (" + desc.names[i] + ")";

@@ -10,9 +10,6 @@
 namespace animkit {
 
 namespace {
-
-// Bones shorter than this have no direction (as in chain.cpp).
-constexpr double kMinBoneLength = 1e-9;
 // A bend whose sine is below this counts as a straight limb, whose bend plane is undefined.
 constexpr double kMinBendSine = 1e-9;
 

@@ -9,6 +9,14 @@
 
 namespace animkit {
 
+/// How far |q| of a rotation, or the length of an axis, may stray from 1 before the input is
+/// refused as not unit: far above the rounding of a normalized quaternion written with 9 digits,
+/// far below a user's mistake.
+inline constexpr double kUnitTolerance = 1e-6;
+
+/// Bones shorter than this are treated as zero length: their direction is undefined.
+inline constexpr double kMinBoneLength = 1e-9;
+
 inline bool is_finite(const Vec3& v) {
   return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
 }

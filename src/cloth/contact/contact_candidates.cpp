@@ -3,15 +3,12 @@
 #include <algorithm>
 #include <string>
 
+#include "../stacked_vectors.h"
 #include "animkit/collision/ccd.h"
 
 namespace animkit {
 
 namespace {
-
-Vec3 at(const Eigen::VectorXd& x, int i) {
-  return x.segment<3>(3 * i);
-}
 
 // IPC's mollifier threshold eps_x = 1e-3 |a|^2 |b|^2 from the edges' rest lengths (Li et al.
 // 2020, section 4.3; edge_edge_mollifier.h).

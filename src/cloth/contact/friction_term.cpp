@@ -1,6 +1,7 @@
 #include <cmath>
 #include <string>
 
+#include "../stacked_vectors.h"
 #include "animkit/cloth/friction.h"
 #include "animkit/core/validation.h"
 #include "contact_candidates.h"
@@ -14,10 +15,6 @@ std::optional<Error> check_coefficient(const std::string& what, double mu) {
   if (!std::isfinite(mu) || mu < 0.0)
     return Error{"friction " + what + " must be >= 0, got " + format_number(mu)};
   return std::nullopt;
-}
-
-Vec3 at(const Eigen::VectorXd& x, int v) {
-  return x.segment<3>(3 * v);
 }
 
 // f0(b) - f0(a) without the cancellation of two nearly equal values where it matters: with
