@@ -64,8 +64,8 @@ struct Audit {
       ball_depth = std::max(ball_depth, parts.ball_radius - (v - parts.ball_centre).norm());
       ground_depth = std::max(ground_depth, ground_height - v.y());
     }
-    const bool crosses_self = animkit::testing::count_self_intersections(cloth) > 0;
-    const bool meets_ball = animkit::testing::meshes_intersect(cloth, ball_surface);
+    const bool crosses_self = animkit::audit::count_self_intersections(cloth) > 0;
+    const bool meets_ball = animkit::audit::meshes_intersect(cloth, ball_surface);
     const bool under_ground = std::any_of(cloth.vertices.begin(), cloth.vertices.end(),
                                           [&](const Vec3& v) { return v.y() <= ground_height; });
     self += crosses_self;
@@ -118,8 +118,12 @@ void report_strain(benchmark::State& state, std::array<double, 2> strain) {
   state.counters["strain_max"] = 100.0 * strain[1];
 }
 
-void animkit_drape(benchmark::State& state, int particles, int frames) {
-  const animkit::ClothWorldDesc desc = animkit::bench::drape_world(particles, frames);
+// `velocity_tolerance`: NewtonSettings::velocity_tolerance (0: the scene's stopping test alone).
+void animkit_drape(benchmark::State& state, int particles, int frames,
+                   double velocity_tolerance = 0.0) {
+  animkit::ClothWorldDesc desc = animkit::bench::drape_world(particles, frames);
+  std::get<animkit::NewtonSettings>(desc.simulation.integrator).velocity_tolerance =
+      velocity_tolerance;
   const auto& grid = std::get<animkit::GridClothOptions>(desc.cloth);
   const animkit::bench::DrapeParts parts = animkit::bench::drape_parts(desc);
   for (auto _ : state) {
@@ -156,10 +160,15 @@ void animkit_drape(benchmark::State& state, int particles, int frames) {
         cloth.vertices[i] = sim.state().position(i);
       audit.frame(cloth, ball_surface, parts);
       std::fprintf(stderr,
-                   "animkit %dx%d frame %d/%d: %.1f ms (cpu %.1f), %d Newton, %d CG, %s, "
-                   "%d bad frames so far\n",
+                   "animkit %dx%d frame %d/%d: %.1f ms (cpu %.1f), %d Newton, %d CG, "
+                   "|dx|/h %.2g m/s, %d backtracks, %d lagging passes, ms: hessian %.0f, "
+                   "solve %.0f, line search %.0f, bound %.0f, updates %.0f, gradient %.0f, "
+                   "%s, %d bad frames so far\n",
                    particles, particles, frame, desc.frames, report->ms, cpu.back(),
-                   report->newton_iterations, report->linear_iterations,
+                   report->newton_iterations, report->linear_iterations, report->newton_speed_end,
+                   report->line_search_steps, report->friction_iterations, report->ms_hessian,
+                   report->ms_linear_solve, report->ms_line_search, report->ms_step_bound,
+                   report->ms_term_updates, report->ms_gradient,
                    report->converged ? "converged" : "NOT converged", audit.bad);
       state.ResumeTiming();
     }
@@ -231,6 +240,11 @@ int main(int argc, char** argv) {
   const int whole = animkit::bench::drape_world(41, 1'000'000).frames;
   benchmark::RegisterBenchmark("drape/animkit/41x41",
                                [whole](benchmark::State& s) { animkit_drape(s, 41, whole); })
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(
+      "drape/animkit/41x41/velocity_stop",
+      [whole](benchmark::State& s) { animkit_drape(s, 41, whole, 1e-3); })
       ->Iterations(1)
       ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("drape/bullet/41x41",

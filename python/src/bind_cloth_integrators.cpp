@@ -29,7 +29,8 @@ std::string repr_newton(const NewtonSettings& s) {
          ", gamma=" + repr_number(s.gamma) +
          ", max_line_search_steps=" + std::to_string(s.max_line_search_steps) + ", projection='" +
          enum_name(s.projection, kProjections) +
-         "', record_iterations=" + (s.record_iterations ? "True" : "False") + ")";
+         "', record_iterations=" + (s.record_iterations ? "True" : "False") +
+         ", velocity_tolerance=" + repr_number(s.velocity_tolerance) + ")";
 }
 
 std::string repr_vbd(const VbdSettings& s) {
@@ -102,7 +103,8 @@ void bind_integrators(py::module_& m) {
       "integrator). Stops when |grad g| <= tolerance * |grad g| at the prediction.")
       .def(py::init([](const std::string& linear_solver, double tolerance, int max_iterations,
                        double beta, double gamma, int max_line_search_steps,
-                       const std::string& projection, bool record_iterations) {
+                       const std::string& projection, bool record_iterations,
+                       double velocity_tolerance) {
              NewtonSettings s{parse_enum(linear_solver, kSolvers, "linear solver"),
                               tolerance,
                               max_iterations,
@@ -110,7 +112,8 @@ void bind_integrators(py::module_& m) {
                               gamma,
                               max_line_search_steps,
                               parse_enum(projection, kProjections, "Hessian projection"),
-                              record_iterations};
+                              record_iterations,
+                              velocity_tolerance};
              check(s.validate());
              return s;
            }),
@@ -122,7 +125,8 @@ void bind_integrators(py::module_& m) {
            py::arg("gamma") = newton.gamma,
            py::arg("max_line_search_steps") = newton.max_line_search_steps,
            py::arg("projection") = enum_name(newton.projection, kProjections),
-           py::arg("record_iterations") = newton.record_iterations)
+           py::arg("record_iterations") = newton.record_iterations,
+           py::arg("velocity_tolerance") = newton.velocity_tolerance)
       .def_property(
           "linear_solver",
           [](const NewtonSettings& s) { return enum_name(s.linear_solver, kSolvers); },
@@ -147,6 +151,10 @@ void bind_integrators(py::module_& m) {
           "'when_indefinite' or 'always'.")
       .def_readwrite("record_iterations", &NewtonSettings::record_iterations,
                      "Fill StepReport.iterations.")
+      .def_readwrite("velocity_tolerance", &NewtonSettings::velocity_tolerance,
+                     "IPC's stopping test: a substep also ends when the Newton direction moves "
+                     "no particle faster than this fraction of the cloth's bounding-box diagonal "
+                     "per second (|dx|_inf / h). 0: off; else [0, 1).")
       .def("__repr__", &repr_newton);
 
   const VbdSettings vbd;

@@ -51,6 +51,7 @@ std::string repr_report(const StepReport& r) {
                      ", gradient_norm_start=" + repr_number(r.gradient_norm_start) +
                      ", gradient_norm_end=" + repr_number(r.gradient_norm_end) +
                      ", gradient_tolerance=" + repr_number(r.gradient_tolerance) +
+                     ", newton_speed_end=" + repr_number(r.newton_speed_end) +
                      ", converged=" + yes_no(r.converged) + ", energy=" + repr_number(r.energy) +
                      ", ms=" + repr_number(r.ms) +
                      ", friction_iterations=" + std::to_string(r.friction_iterations) +
@@ -150,8 +151,11 @@ void bind_reports(py::module_& m) {
                     "|grad g| at the accepted x (last substep).")
       .def_readonly("gradient_tolerance", &StepReport::gradient_tolerance,
                     "The |grad g| the solver stopped at.")
+      .def_readonly("newton_speed_end", &StepReport::newton_speed_end,
+                    "|dx|_inf / h of the last Newton direction (m/s), what "
+                    "NewtonSettings.velocity_tolerance bounds.")
       .def_readonly("converged", &StepReport::converged,
-                    "Every substep reached its gradient tolerance.")
+                    "Every substep reached its stopping test.")
       .def_readonly("energy", &StepReport::energy, "Total mechanical energy after the step.")
       .def_readonly("ms", &StepReport::ms, "Wall time of the whole step, ms.")
       .def_readonly("friction_iterations", &StepReport::friction_iterations,

@@ -188,6 +188,10 @@ def test_integrator_settings():
     assert repr(newton).startswith("NewtonSettings(linear_solver='pcg', tolerance=1e-06, ")
     newton.linear_solver = "multigrid"
     assert newton.linear_solver == "multigrid"
+    assert newton.velocity_tolerance == 0.0
+    assert animkit.NewtonSettings(velocity_tolerance=1e-3).velocity_tolerance == 1e-3
+    assert repr(animkit.NewtonSettings(velocity_tolerance=1e-3)).endswith(
+        ", velocity_tolerance=0.001)")
     assert animkit.VbdSettings().max_iterations == 1000
     assert animkit.LocalGlobalSettings(chebyshev=False).chebyshev is False
     assert repr(animkit.ExplicitEulerSettings()) == "ExplicitEulerSettings()"
@@ -203,6 +207,8 @@ def test_integrator_settings_errors():
         animkit.NewtonSettings(projection="never")
     with pytest.raises(animkit.Error):
         animkit.NewtonSettings(tolerance=2.0)
+    with pytest.raises(animkit.Error, match=r"velocity tolerance must be in \[0, 1\), got -1"):
+        animkit.NewtonSettings(velocity_tolerance=-1.0)
     with pytest.raises(animkit.Error):
         animkit.NewtonSettings(tolerance=math.nan)
     with pytest.raises(animkit.Error):

@@ -19,7 +19,7 @@ import animkit
 
 EXACT_FIELDS = ["newton_iterations", "line_search_steps", "linear_iterations",
                 "projected_iterations", "gradient_norm_start", "gradient_norm_end",
-                "converged", "energy", "step_bound_min"]
+                "newton_speed_end", "converged", "energy", "step_bound_min"]
 CONTACT_FIELDS = ["contact_pairs", "min_contact_distance", "friction_iterations"]
 
 

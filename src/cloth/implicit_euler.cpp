@@ -30,6 +30,10 @@ std::optional<Error> NewtonSettings::validate() const {
   if (!std::isfinite(gamma) || gamma <= 0.0 || gamma >= 1.0) {
     return Error{"line-search gamma must be in (0, 1), got " + format_number(gamma)};
   }
+  if (!std::isfinite(velocity_tolerance) || velocity_tolerance < 0.0 ||
+      velocity_tolerance >= 1.0) {
+    return Error{"velocity tolerance must be in [0, 1), got " + format_number(velocity_tolerance)};
+  }
   if (max_line_search_steps < 1) {
     return Error{"max line-search steps must be at least 1, got " +
                  std::to_string(max_line_search_steps)};
@@ -124,6 +128,7 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
   // Converged: |grad g| small and every term at the substep's end (a moving collider at its
   // pose at t + h: until then g is not yet the end's potential).
   bool converged = stop.reached(gradient_norm) && potential_.terms_settled();
+  const double speed_stop = options_.velocity_tolerance * bounding_diagonal(state.positions);
   ++report.friction_iterations;
   for (int k = 0; std::isfinite(gradient_norm) && k < options_.max_iterations; ++k) {
     // Converged: a term that lagged quantities may refresh them and go on (friction's passes).
@@ -142,6 +147,15 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
     if (options_.record_iterations) record.objective = potential_.value(x_);
     const double slope =
         newton_direction(gradient_norm, gradient_norm / start_norm, record, report);
+    report.newton_speed_end = dx_.lpNorm<Eigen::Infinity>() / h;
+    if (report.newton_speed_end <= speed_stop && potential_.terms_settled() &&
+        potential_.terms_gaps_healthy(x_)) {
+      // The next correction is below the physical tolerance and no gap is closing: x is the
+      // substep's end (IPC takes no step then either). Friction may re-lag at the loop's top.
+      report.linear_iterations += record.linear_iterations;
+      converged = true;
+      continue;
+    }
     const double bound = step_bound(report);
     const std::optional<double> decrease = line_search(slope, bound, record, report);
     report.line_search_steps += record.line_search_steps;

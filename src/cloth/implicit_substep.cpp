@@ -4,6 +4,12 @@
 
 namespace animkit {
 
+double bounding_diagonal(const Eigen::VectorXd& positions) {
+  const auto points = positions.reshaped(3, positions.size() / 3);
+  if (points.cols() == 0) return 0.0;
+  return (points.rowwise().maxCoeff() - points.rowwise().minCoeff()).norm();
+}
+
 GradientStop begin_implicit_substep(const IncrementalPotential& potential, double start_norm,
                                     double tolerance, StepReport& report) {
   if (report.substeps_done == 0) report.gradient_norm_start = start_norm;

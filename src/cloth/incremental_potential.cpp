@@ -88,6 +88,11 @@ bool IncrementalPotential::terms_settled() const {
                      [](const auto& term) { return term->settled(); });
 }
 
+bool IncrementalPotential::terms_gaps_healthy(const Eigen::VectorXd& x) const {
+  return std::all_of(terms_.begin(), terms_.end(),
+                     [&x](const auto& term) { return term->gaps_healthy(x); });
+}
+
 double IncrementalPotential::max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) {
   double bound = 1.0;
   for (const auto& term : terms_) bound = std::min(bound, term->max_step(x, step));

@@ -223,6 +223,15 @@ class SceneReader {
     }
     if (auto tolerance = fields.number("tolerance"))
       set_tolerance(simulation.integrator, *tolerance);
+    if (auto velocity = fields.number("velocity_tolerance")) {
+      auto* newton = std::get_if<NewtonSettings>(&simulation.integrator);
+      if (!newton) {
+        fields.error("velocity_tolerance",
+                     "applies to the Newton integrators (implicit-*) only, not " +
+                         quote_input(integrator_entry(simulation.integrator).name));
+      }
+      newton->velocity_tolerance = *velocity;  // its range is checked with the integrator's
+    }
     simulation.substeps = fields.integer("substeps").value_or(simulation.substeps);
     fields.finish();
   }

@@ -24,7 +24,7 @@ std::vector<std::string_view> implicit_integrators() {
   return names;
 }
 
-class ClothProperty : public testing::TestWithParam<std::string_view> {};
+class ClothProperty : public ::testing::TestWithParam<std::string_view> {};
 
 TEST_P(ClothProperty, RandomClothsKeepEveryInvariant) {
   std::mt19937 rng(20261123);
@@ -71,7 +71,7 @@ TEST_P(ClothProperty, RandomClothsKeepEveryInvariant) {
   EXPECT_EQ(steps, 40 * 15);
 }
 
-INSTANTIATE_TEST_SUITE_P(Implicit, ClothProperty, testing::ValuesIn(implicit_integrators()),
+INSTANTIATE_TEST_SUITE_P(Implicit, ClothProperty, ::testing::ValuesIn(implicit_integrators()),
                          [](const auto& param_info) {
                            std::string name(param_info.param);
                            for (char& c : name) c = c == '-' ? '_' : c;

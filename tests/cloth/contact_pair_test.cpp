@@ -1,6 +1,7 @@
 // One contact pair's barrier (src/cloth/contact/contact_pair.h): gradients and exact Hessians
 // against central finite differences for every kind, on configurations inside the activation
-// distance; the projected Hessian is PSD; beyond dhat everything is zero; contact is infinite.
+// distance; the projected Hessian is PSD, the Gauss-Newton one rank one; beyond dhat everything
+// is zero; contact is infinite.
 // GCC 12's AVX-512 intrinsics trip -Wuninitialized when Eigen's eigensolver is inlined with
 // -march=native (a false positive in the compiler's own headers, see psd_projection.cpp).
 #pragma GCC diagnostic ignored "-Wuninitialized"
@@ -84,6 +85,34 @@ TEST_P(ContactPairKinds, DerivativesMatchFiniteDifferences) {
   }
 }
 
+// The Gauss-Newton Hessian keeps the barrier's curvature along the distance and drops the
+// distance's own curvature: PSD and rank one, and exact for a move that changes the distance
+// linearly (the upper primitive translated along the pair's normal: its configurations are
+// point over the triangle's face, or crossing edges, whose mollifier is 1).
+TEST_P(ContactPairKinds, GaussNewtonHessianIsRankOneAndExactAlongTheNormal) {
+  std::mt19937 rng(11);
+  const ContactPair pair = pair_of(GetParam());
+  const LogBarrier b = barrier();
+  const std::vector<int> upper =
+      pair.kind == ContactKind::edge_edge ? std::vector<int>{2, 3} : std::vector<int>{0};
+  for (int trial = 0; trial < 20; ++trial) {
+    const std::array<Vec3, 4> p = configuration(pair.kind, rng);
+    const StencilDerivatives<4> exact = contact_barrier_derivatives(pair, p, 0.0, b, false);
+    const Eigen::Matrix<double, 12, 12> gn = contact_barrier_gauss_newton_hessian(pair, p, 0.0, b);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>> eig(gn);
+    const double largest = eig.eigenvalues().maxCoeff();
+    ASSERT_GT(largest, 0.0);
+    EXPECT_GT(eig.eigenvalues().minCoeff(), -1e-12 * largest);
+    EXPECT_LT(eig.eigenvalues()(10), 1e-12 * largest);  // rank one
+    // The gradient of the barrier at the upper primitive's first vertex points along -n.
+    const Vec3 normal = exact.gradient.segment<3>(3 * upper.front()).normalized();
+    Eigen::Matrix<double, 12, 1> move = Eigen::Matrix<double, 12, 1>::Zero();
+    for (const int v : upper) move.segment<3>(3 * v) = normal;
+    const double along_exact = move.dot(exact.hessian * move);
+    EXPECT_NEAR(move.dot(gn * move), along_exact, 1e-9 * std::abs(along_exact));
+  }
+}
+
 TEST_P(ContactPairKinds, NothingBeyondTheActivationDistance) {
   std::mt19937 rng(3);
   const ContactPair pair = pair_of(GetParam());
@@ -95,6 +124,7 @@ TEST_P(ContactPairKinds, NothingBeyondTheActivationDistance) {
   const auto d = contact_barrier_derivatives(pair, far, 0.0, barrier());
   EXPECT_EQ(d.gradient.norm(), 0.0);
   EXPECT_EQ(d.hessian.norm(), 0.0);
+  EXPECT_EQ(contact_barrier_gauss_newton_hessian(pair, far, 0.0, barrier()).norm(), 0.0);
 }
 
 TEST(ContactPair, AParticleOnOrBelowTheGroundIsInContact) {

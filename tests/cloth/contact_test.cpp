@@ -72,8 +72,8 @@ TEST(Contact, AClothThrownAtASphereAt20MetresPerSecondNeverPassesThrough) {
     ASSERT_TRUE(report) << report.error().message;
     converged += report->converged ? 1 : 0;
     const TriangleMesh cloth = cloth_mesh(*sim);
-    ASSERT_FALSE(testing::meshes_intersect(cloth, ball)) << "frame " << frame;
-    ASSERT_EQ(testing::count_self_intersections(cloth), 0) << "frame " << frame;
+    ASSERT_FALSE(audit::meshes_intersect(cloth, ball)) << "frame " << frame;
+    ASSERT_EQ(audit::count_self_intersections(cloth), 0) << "frame " << frame;
     for (const Vec3& v : cloth.vertices) {
       ASSERT_GT(v.norm(), 0.25 * 0.98) << "a particle inside the ball at frame " << frame;
       ASSERT_GT(v.y(), -0.5) << "a particle below the ground at frame " << frame;

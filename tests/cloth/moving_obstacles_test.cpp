@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <numbers>
 
-// Before the audit's header: its namespace animkit::testing would hide gtest's ::testing here.
 #include "animkit/cloth/cloth_simulator.h"
 #include "animkit/cloth/contact.h"
 #include "animkit/cloth/grid_cloth.h"
@@ -118,9 +117,9 @@ int run_audited(World& w, int frames, int first = 1) {
     EXPECT_EQ(w.contact->collider_points(), collider_points(w.contact->colliders(), t));
     const TriangleMesh cloth = sheet_mesh(w.sim);
     for (const Collider& c : w.contact->colliders()) {
-      EXPECT_FALSE(testing::meshes_intersect(cloth, surface_at(c, t))) << "frame " << frame;
+      EXPECT_FALSE(audit::meshes_intersect(cloth, surface_at(c, t))) << "frame " << frame;
     }
-    EXPECT_EQ(testing::count_self_intersections(cloth), 0) << "frame " << frame;
+    EXPECT_EQ(audit::count_self_intersections(cloth), 0) << "frame " << frame;
     for (int i = 0; i < w.sim.model().particle_count(); ++i) {
       if (w.sim.model().pinned[i]) {
         EXPECT_EQ(w.sim.state().position(i), start.position(i));
@@ -254,7 +253,7 @@ TEST(MovingObstacles, AColliderDraggedByHandPushesTheClothWithTheSameGuarantee) 
     for (std::size_t i = 0; i < ball.vertices.size(); ++i)
       points.segment<3>(3 * static_cast<Eigen::Index>(i)) = ball.vertices[i];
     EXPECT_EQ(w.contact->collider_points(), points);
-    EXPECT_FALSE(testing::meshes_intersect(sheet_mesh(w.sim), ball)) << "frame " << frame;
+    EXPECT_FALSE(audit::meshes_intersect(sheet_mesh(w.sim), ball)) << "frame " << frame;
   }
   for (int i = 0; i < w.sim.model().particle_count(); ++i) {
     if (w.sim.model().pinned[i]) {
@@ -284,7 +283,7 @@ TEST(MovingObstacles, AColliderThatCannotGetThroughLeavesTheStepUnconverged) {
     const Eigen::VectorXd points = w.contact->collider_points();
     for (std::size_t i = 0; i < ball.vertices.size(); ++i)
       ball.vertices[i] = points.segment<3>(3 * static_cast<Eigen::Index>(i));
-    EXPECT_FALSE(testing::meshes_intersect(sheet_mesh(w.sim), ball)) << "frame " << frame;
+    EXPECT_FALSE(audit::meshes_intersect(sheet_mesh(w.sim), ball)) << "frame " << frame;
     if (frame >= 2) {  // by then it has reached the sheet
       EXPECT_FALSE(report->converged);
       EXPECT_FALSE(w.contact->settled());

@@ -97,6 +97,13 @@ TEST(ClothSceneFile, ReadsAMeshClothAndAMeshColliderBesideTheFile) {
   EXPECT_EQ(std::get<MeshShape>(scene->colliders[0].shape).mesh.triangles.size(), 4u);
 }
 
+TEST(ClothSceneFile, ReadsTheVelocityTolerance) {
+  const auto scene = parse(
+      R"({"solver": {"integrator": "implicit-multigrid", "velocity_tolerance": 1e-3}})");
+  ASSERT_TRUE(scene) << scene.error().message;
+  EXPECT_EQ(std::get<NewtonSettings>(scene->simulation.integrator).velocity_tolerance, 1e-3);
+}
+
 TEST(ClothSceneFile, TheREADMEsExampleSceneReadsAndBuilds) {
   const auto scene = read_cloth_scene(ANIMKIT_SOURCE_DIR "/docs/scenes/pillow-drop.json");
   ASSERT_TRUE(scene) << scene.error().message;
@@ -156,6 +163,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{R"({"solver": {"integrator": "rk4"}})",
                  "solver.integrator: unknown integrator 'rk4' (expected one of: " +
                      integrator_names() + ")"},
+        BadScene{R"({"solver": {"integrator": "vbd", "velocity_tolerance": 1e-3}})",
+                 "solver.velocity_tolerance: applies to the Newton integrators (implicit-*) "
+                 "only, not 'vbd'"},
+        BadScene{R"({"solver": {"integrator": "implicit-pcg", "velocity_tolerance": -1}})",
+                 "velocity tolerance must be in [0, 1), got -1"},
         BadScene{R"({"dt": 1e400})",
                  "not valid JSON ([json.exception.out_of_range.406] number overflow parsing "
                  "'1e400')"},

@@ -52,7 +52,7 @@ TEST_P(BuiltinSceneAuditSlow, EveryFrameIsIntersectionFreeAndConverged) {
         ASSERT_GT(sim.state().position(i).y(), desc.ground->height) << "frame " << frame;
       }
     }
-    ASSERT_EQ(testing::count_self_intersections(cloth), 0) << "frame " << frame;
+    ASSERT_EQ(audit::count_self_intersections(cloth), 0) << "frame " << frame;
     // Each collider's surface as contact had it at the frame's end: its pose at that time (a
     // sphere keeps its first orientation, its spin being friction's business only).
     const Eigen::VectorXd& obstacles =
@@ -69,7 +69,7 @@ TEST_P(BuiltinSceneAuditSlow, EveryFrameIsIntersectionFreeAndConverged) {
         }
       }
       first += static_cast<int>(surface.vertices.size());
-      ASSERT_FALSE(testing::meshes_intersect(cloth, surface))
+      ASSERT_FALSE(audit::meshes_intersect(cloth, surface))
           << "frame " << frame << " meets " << collider.name();
     }
   }

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace animkit::testing {
+namespace animkit::audit {
 
 namespace {
 
@@ -49,4 +49,4 @@ bool meshes_intersect(const TriangleMesh& a, const TriangleMesh& b) {
   return pmp::do_intersect(to_cgal(a), to_cgal(b));
 }
 
-}  // namespace animkit::testing
+}  // namespace animkit::audit

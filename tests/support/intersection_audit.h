@@ -8,7 +8,7 @@
 #include "animkit/core/triangle_mesh.h"
 #include "animkit/core/types.h"
 
-namespace animkit::testing {
+namespace animkit::audit {
 
 /// Pairs of triangles of the mesh that intersect, besides what they legitimately share (a
 /// common vertex or edge of adjacent triangles). Exact.
@@ -17,4 +17,4 @@ int count_self_intersections(const TriangleMesh& mesh);
 /// Whether a triangle of `a` intersects (touches or crosses) a triangle of `b`. Exact.
 bool meshes_intersect(const TriangleMesh& a, const TriangleMesh& b);
 
-}  // namespace animkit::testing
+}  // namespace animkit::audit

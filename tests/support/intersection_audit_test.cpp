@@ -6,7 +6,7 @@
 
 #include "animkit/cloth/grid_cloth.h"
 
-namespace animkit::testing {
+namespace animkit::audit {
 namespace {
 
 TriangleMesh grid_mesh(int cells) {
@@ -41,4 +41,4 @@ TEST(IntersectionAudit, TouchingCountsAndSeparatedDoesNot) {
 }
 
 }  // namespace
-}  // namespace animkit::testing
+}  // namespace animkit::audit

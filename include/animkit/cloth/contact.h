@@ -100,6 +100,7 @@ class ContactTerm final : public EnergyTerm {
 
   /// False while a collider is short of its pose at the substep's end (CCD held it back).
   bool settled() const override;
+  bool gaps_healthy(const Eigen::VectorXd& x) const override;
 
   /// Drives collider `index` (of ContactObstacles::colliders, in order) by hand from now on
   /// (e.g. the viewer's mouse): the next substep moves it from where it is to `target` (world

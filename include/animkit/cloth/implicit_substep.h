@@ -26,6 +26,10 @@ struct GradientStop {
   bool reached(double norm) const { return std::isfinite(norm) && norm <= stop; }
 };
 
+/// The diagonal of the bounding box of stacked positions (x0 y0 z0 x1 ...): the scene size
+/// that NewtonSettings::velocity_tolerance is a fraction of. 0 for fewer than two points.
+double bounding_diagonal(const Eigen::VectorXd& positions);
+
 /// Starts a substep's report: |grad g(y)| (`start_norm`) as the step's start on its first
 /// substep, one more substep done, the tolerance reached so far; returns the stopping test.
 GradientStop begin_implicit_substep(const IncrementalPotential& potential, double start_norm,

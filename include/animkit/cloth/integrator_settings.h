@@ -57,6 +57,14 @@ struct NewtonSettings {
   int max_line_search_steps = 50;  ///< backtracking reductions before giving up, >= 1
   HessianProjection projection = HessianProjection::when_indefinite;
   bool record_iterations = false;  ///< fill StepReport::iterations
+  /// IPC's stopping test on the Newton direction dx (Li et al. 2020; ipc-sim/IPC,
+  /// Optimizer.cpp, "distToOpt_PN < tol * bboxDiagSize * dt"): a substep also ends when
+  /// |dx|_inf / h <= velocity_tolerance * L, i.e. when no particle's next correction moves it
+  /// faster than this fraction of the cloth's size L per second (L the diagonal of the cloth's
+  /// bounding box at the substep's start). Unlike the relative gradient it means the same on
+  /// any mesh and does not wander where buckling cloth has several minima. 0: off; else
+  /// [0, 1). IPC's scripts mostly use 1e-3.
+  double velocity_tolerance = 0.0;
 
   std::optional<Error> validate() const;
 };

@@ -34,7 +34,10 @@ struct StepReport {
   double gradient_norm_end = 0.0;    ///< |grad g| at the accepted x (last substep)
   /// The |grad g| Newton stopped at: tolerance x the start, or the rounding floor when higher.
   double gradient_tolerance = 0.0;
-  bool converged = true;  ///< every substep reached its gradient tolerance
+  /// |dx|_inf / h of the last Newton direction computed (m/s; 0 before the first), the
+  /// quantity NewtonSettings::velocity_tolerance bounds.
+  double newton_speed_end = 0.0;
+  bool converged = true;  ///< every substep reached its stopping test
   double energy = 0.0;    ///< total mechanical energy after the step (cloth_energy().total)
   double ms = 0.0;        ///< wall time of the whole step
   /// Lagged minimizations (friction's lagging passes, friction.h), summed over substeps: one

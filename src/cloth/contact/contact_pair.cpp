@@ -95,6 +95,22 @@ StencilDerivatives<4> contact_barrier_derivatives(const ContactPair& pair,
   return out;
 }
 
+Eigen::Matrix<double, 12, 12> contact_barrier_gauss_newton_hessian(const ContactPair& pair,
+                                                                   const std::array<Vec3, 4>& p,
+                                                                   double ground,
+                                                                   const LogBarrier& barrier) {
+  const StencilDerivatives<4> d = distance_derivatives(pair, p, ground);
+  assert(d.value > 0.0 && "a contact pair's derivatives need a positive distance");
+  if (!(d.value < barrier.dhat())) return Eigen::Matrix<double, 12, 12>::Zero();  // inactive
+  const double curvature = std::max(
+      2.0 * barrier.first_derivative(d.value) + 4.0 * d.value * barrier.second_derivative(d.value),
+      0.0);
+  double weight = curvature / (4.0 * d.value);
+  if (pair.kind == ContactKind::edge_edge)
+    weight *= edge_edge_mollifier(p[0], p[1], p[2], p[3], pair.mollifier_threshold);
+  return weight * d.gradient * d.gradient.transpose();
+}
+
 Eigen::Matrix<double, 12, 1> contact_barrier_gradient(const ContactPair& pair,
                                                       const std::array<Vec3, 4>& p, double ground,
                                                       const LogBarrier& barrier) {

@@ -48,6 +48,18 @@ StencilDerivatives<4> contact_barrier_derivatives(const ContactPair& pair,
                                                   const std::array<Vec3, 4>& p, double ground,
                                                   const LogBarrier& barrier, bool project = true);
 
+/// A Gauss-Newton Hessian of the barrier, PSD by construction (no eigendecomposition): with
+/// s = sqrt(d) the unsquared distance and B(s) = b(s^2), the pair's energy m B(s(x)) has the
+/// Hessian m B''(s) grad s grad s^T plus terms in the curvature of s and of the mollifier m;
+/// keeping the first alone, with B''(s) = 2 b'(d) + 4 d b''(d) clamped at 0, gives the
+/// rank-one m max(B'', 0) grad d grad d^T / (4 d) (grad s = grad d / (2 s)). This is how
+/// Offset Geometric Contact treats its pairs (Chen et al. 2025, section 3.6). The pair must be
+/// at a positive distance; zero beyond dhat.
+Eigen::Matrix<double, 12, 12> contact_barrier_gauss_newton_hessian(const ContactPair& pair,
+                                                                   const std::array<Vec3, 4>& p,
+                                                                   double ground,
+                                                                   const LogBarrier& barrier);
+
 /// The barrier's gradient alone (the same numbers as contact_barrier_derivatives' gradient),
 /// without the Hessian's assembly and projection, which cost most of a pair's evaluation.
 Eigen::Matrix<double, 12, 1> contact_barrier_gradient(const ContactPair& pair,

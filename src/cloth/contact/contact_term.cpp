@@ -27,6 +27,11 @@ constexpr double kHalfThicknessForce = 4.3294;
 // much as this many iterations of a light per-particle loop (parallel::for_each_weighted).
 constexpr int kPairWeight = 64;
 
+// The closest a pair may be, as a fraction of the thickness, for a substep to end on the size
+// of its next step (EnergyTerm::gaps_healthy): resting cloth sits near half the thickness, the
+// substep's start at a tenth of its gap.
+constexpr double kHealthyGapFraction = 0.1;
+
 }  // namespace
 
 std::optional<Error> ContactSettings::validate() const {
@@ -323,6 +328,10 @@ void ContactTerm::contact_points(const Eigen::VectorXd& x, std::vector<ContactPo
     }
     out.push_back(point);
   }
+}
+
+bool ContactTerm::gaps_healthy(const Eigen::VectorXd& x) const {
+  return stats(x).min_distance >= kHealthyGapFraction * impl_->settings.thickness;
 }
 
 ContactStats ContactTerm::stats(const Eigen::VectorXd& x) const {

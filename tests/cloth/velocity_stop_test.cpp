@@ -1,0 +1,149 @@
+// NewtonSettings::velocity_tolerance: IPC's stopping test |dx|_inf / h <= tolerance * L.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "../support/crumpled_cloth.h"
+#include "animkit/cloth/cloth_simulator.h"
+#include "animkit/cloth/contact.h"
+#include "animkit/cloth/grid_cloth.h"
+#include "animkit/cloth/implicit_substep.h"
+
+namespace animkit {
+namespace {
+
+ClothSimulator newton_simulator(const ClothDesc& desc, const NewtonSettings& settings) {
+  auto sim = ClothSimulator::create(desc, {settings, 0});
+  EXPECT_TRUE(sim) << sim.error().message;
+  return std::move(*sim);
+}
+
+// A stiff cloth crumpled at random, stepped with h = 0.2: Newton needs several iterations.
+ClothDesc crumpled_stiff_cloth() {
+  return testing_support::crumpled(make_grid_cloth({.cells = 6, .stiffness = 1e4}));
+}
+
+TEST(VelocityStop, RejectsToleranceOutsideZeroToOne) {
+  for (const double bad : {-1e-3, 1.0, std::numeric_limits<double>::quiet_NaN(),
+                           std::numeric_limits<double>::infinity()}) {
+    NewtonSettings settings;
+    settings.velocity_tolerance = bad;
+    const auto sim = ClothSimulator::create(make_grid_cloth(), {settings, 0});
+    ASSERT_FALSE(sim);
+    EXPECT_EQ(sim.error().message.rfind("velocity tolerance must be in [0, 1), got ", 0), 0u)
+        << sim.error().message;
+  }
+}
+
+TEST(VelocityStop, BoundingDiagonalIsTheBoxOfThePoints) {
+  Eigen::VectorXd points(9);
+  points << 0, 0, 0, 3, 0, -1, 1, 4, 0;
+  EXPECT_DOUBLE_EQ(bounding_diagonal(points), std::sqrt(9.0 + 16.0 + 1.0));
+  EXPECT_EQ(bounding_diagonal(Eigen::VectorXd()), 0.0);
+}
+
+// The test's meaning: Newton converges quadratically near the solution, so the correction it
+// would still make is about the distance left to the exact step. Each step, from the same
+// state, ends within a few times tolerance * L * h of a tightly converged step.
+TEST(VelocityStop, EndsWithinTheToleranceOfTheExactStep) {
+  constexpr double kTolerance = 1e-3;
+  constexpr double kStep = 0.2;
+  for (const LinearSolverKind solver : {LinearSolverKind::direct, LinearSolverKind::multigrid}) {
+    NewtonSettings loose;
+    loose.linear_solver = solver;
+    loose.tolerance = 1e-12;  // below rounding: only the velocity test (or the floor) stops
+    loose.velocity_tolerance = kTolerance;
+    NewtonSettings tight;
+    tight.linear_solver = LinearSolverKind::direct;
+    tight.tolerance = 1e-12;
+    auto sim = newton_simulator(crumpled_stiff_cloth(), loose);
+    auto reference = newton_simulator(crumpled_stiff_cloth(), tight);
+    int loose_iterations = 0, tight_iterations = 0;
+    for (int frame = 0; frame < 12; ++frame) {
+      const ClothState start = sim.state();
+      const double allowed = kTolerance * bounding_diagonal(start.positions);
+      ASSERT_TRUE(reference.set_state(start));
+      const auto report = sim.step(kStep);
+      const auto exact = reference.step(kStep);
+      ASSERT_TRUE(report && exact);
+      EXPECT_TRUE(report->converged) << "frame " << frame;
+      // Stopped by the velocity test, or earlier by the gradient's rounding floor.
+      EXPECT_TRUE(report->newton_speed_end <= allowed ||
+                  report->gradient_norm_end <= report->gradient_tolerance)
+          << "frame " << frame << ": " << report->newton_speed_end << " m/s";
+      const double error =
+          (sim.state().positions - reference.state().positions).lpNorm<Eigen::Infinity>();
+      EXPECT_LE(error, 3.0 * allowed * kStep) << "frame " << frame;
+      loose_iterations += report->newton_iterations;
+      tight_iterations += exact->newton_iterations;
+    }
+    // It is a looser test than a gradient at rounding level: it must save iterations.
+    EXPECT_LT(loose_iterations, tight_iterations);
+  }
+}
+
+// Each substep starts at the admissible point nearest its prediction, which closes a resting
+// gap to a tenth. Stopped there at once (the next step is tiny: the cloth is at rest), the
+// gap would shrink tenfold every step until rounding let the cloth through; the test waits
+// for gaps of a tenth of the thickness. A cotton sheet dropped 5 mm onto the ground rests on it
+// for 90 steps (at about 0.8 mm; each resting step takes 5 Newton iterations to reopen the gap
+// its start closed).
+TEST(VelocityStop, RestingContactConvergesAndKeepsItsGap) {
+  constexpr double kThickness = 2e-3;
+  GridClothOptions grid{.cells = 6, .size = 0.3, .gravity = 9.81};
+  grid.height = 5e-3;
+  grid.material = ClothMaterial{};
+  grid.pins = GridPins::none;
+  NewtonSettings settings;
+  settings.linear_solver = LinearSolverKind::multigrid;
+  settings.tolerance = 1e-4;
+  settings.velocity_tolerance = 1e-3;
+  settings.max_iterations = 300;
+  auto sim = newton_simulator(make_grid_cloth(grid), settings);
+  auto contact = ContactTerm::create(std::make_shared<const ClothModel>(sim.model()),
+                                     {.thickness = kThickness},
+                                     {.meshes = {}, .ground_height = 0.0});
+  ASSERT_TRUE(contact) << contact.error().message;
+  ASSERT_TRUE(sim.add_energy_term(*contact));
+  for (int frame = 0; frame < 90; ++frame) {
+    const auto report = sim.step(1.0 / 30.0);
+    ASSERT_TRUE(report) << report.error().message;
+    EXPECT_TRUE(report->converged) << "frame " << frame;
+    if (report->contact_pairs > 0) {
+      EXPECT_GE(report->min_contact_distance, 0.1 * kThickness) << "frame " << frame;
+    }
+  }
+}
+
+// The contact's side of the test above: a pair closer than a tenth of the thickness is not
+// healthy, one at rest height (about half the thickness) is, and no pair at all is.
+TEST(VelocityStop, ContactGapsAreHealthyFromATenthOfTheThickness) {
+  GridClothOptions grid{.cells = 1, .size = 0.1, .gravity = 9.81};
+  grid.material = ClothMaterial{};
+  grid.pins = GridPins::none;
+  auto sim = newton_simulator(make_grid_cloth(grid), NewtonSettings{});
+  auto contact = ContactTerm::create(std::make_shared<const ClothModel>(sim.model()),
+                                     {.thickness = 2e-3}, {.meshes = {}, .ground_height = 0.0});
+  ASSERT_TRUE(contact) << contact.error().message;
+  ContactTerm& term = **contact;
+  Eigen::VectorXd x = sim.state().positions;
+  for (const double height : {0.15e-3, 1e-3, 0.5}) {
+    for (int i = 0; i < sim.model().particle_count(); ++i) x[3 * i + 1] = height;
+    term.update(x);  // gathers the pairs at x
+    EXPECT_EQ(term.gaps_healthy(x), height >= 0.2e-3) << "height " << height;
+  }
+}
+
+TEST(VelocityStop, OffByDefaultButTheSpeedIsReported) {
+  auto sim = newton_simulator(crumpled_stiff_cloth(), NewtonSettings{});
+  const auto report = sim.step(0.2);
+  ASSERT_TRUE(report);
+  EXPECT_TRUE(report->converged);
+  EXPECT_LE(report->gradient_norm_end, report->gradient_tolerance);
+  EXPECT_GT(report->newton_speed_end, 0.0);
+}
+
+}  // namespace
+}  // namespace animkit
