@@ -27,6 +27,9 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "animkit/cloth/cloth_world.h"
@@ -118,12 +121,17 @@ void report_strain(benchmark::State& state, std::array<double, 2> strain) {
   state.counters["strain_max"] = 100.0 * strain[1];
 }
 
-// `velocity_tolerance`: NewtonSettings::velocity_tolerance (0: the scene's stopping test alone).
-void animkit_drape(benchmark::State& state, int particles, int frames,
-                   double velocity_tolerance = 0.0) {
+// What a variant changes from the scene's defaults.
+struct Variant {
+  double velocity_tolerance = 0.0;  ///< NewtonSettings::velocity_tolerance (0: off)
+  std::optional<animkit::BarrierHessian> hessian = std::nullopt;  ///< ContactSettings::hessian
+};
+
+void animkit_drape(benchmark::State& state, int particles, int frames, Variant variant = {}) {
   animkit::ClothWorldDesc desc = animkit::bench::drape_world(particles, frames);
   std::get<animkit::NewtonSettings>(desc.simulation.integrator).velocity_tolerance =
-      velocity_tolerance;
+      variant.velocity_tolerance;
+  if (variant.hessian) desc.contact.hessian = *variant.hessian;
   const auto& grid = std::get<animkit::GridClothOptions>(desc.cloth);
   const animkit::bench::DrapeParts parts = animkit::bench::drape_parts(desc);
   for (auto _ : state) {
@@ -242,11 +250,22 @@ int main(int argc, char** argv) {
                                [whole](benchmark::State& s) { animkit_drape(s, 41, whole); })
       ->Iterations(1)
       ->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark(
-      "drape/animkit/41x41/velocity_stop",
-      [whole](benchmark::State& s) { animkit_drape(s, 41, whole, 1e-3); })
-      ->Iterations(1)
-      ->Unit(benchmark::kMillisecond);
+  // The choices that trade IPC's defaults for speed (NewtonSettings::velocity_tolerance,
+  // ContactSettings::hessian), alone and together.
+  const std::pair<const char*, Variant> variants[] = {
+      {"velocity_stop", {.velocity_tolerance = 1e-3}},
+      {"gauss_newton", {.hessian = animkit::BarrierHessian::gauss_newton}},
+      {"gauss_newton/velocity_stop",
+       {.velocity_tolerance = 1e-3, .hessian = animkit::BarrierHessian::gauss_newton}},
+  };
+  for (const auto& [name, variant] : variants) {
+    benchmark::RegisterBenchmark((std::string("drape/animkit/41x41/") + name).c_str(),
+                                 [whole, variant](benchmark::State& s) {
+                                   animkit_drape(s, 41, whole, variant);
+                                 })
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+  }
   benchmark::RegisterBenchmark("drape/bullet/41x41",
                                [whole](benchmark::State& s) { bullet_drape(s, 41, whole, 0.0); })
       ->Iterations(1)

@@ -17,6 +17,9 @@
 namespace animkit::python {
 namespace {
 
+constexpr Named<BarrierHessian> kBarrierHessians[] = {
+    {"projected", BarrierHessian::projected}, {"gauss_newton", BarrierHessian::gauss_newton}};
+
 // ---- colliders ----
 
 std::vector<Keyframe> to_keyframes(const py::handle& value) {
@@ -292,17 +295,19 @@ void bind_colliders(py::module_& m) {
       m, "ContactSettings",
       "Contact between the cloth and colliders, ground and itself (Incremental Potential "
       "Contact: a log barrier within `thickness`, continuous collision detection).")
-      .def(py::init(
-               [](double thickness, double stiffness, bool self_contact, double min_separation) {
-                 ContactSettings s{thickness, stiffness, self_contact, min_separation};
-                 check(s.validate());
-                 return s;
-               }),
-           "Raises animkit.Error for an out-of-range value.",
+      .def(py::init([](double thickness, double stiffness, bool self_contact,
+                       double min_separation, const std::string& hessian) {
+             ContactSettings s{thickness, stiffness, self_contact, min_separation,
+                               parse_enum(hessian, kBarrierHessians, "hessian")};
+             check(s.validate());
+             return s;
+           }),
+           "Raises animkit.Error for an out-of-range value or an unknown hessian.",
            py::arg("thickness") = ContactSettings{}.thickness,
            py::arg("stiffness") = ContactSettings{}.stiffness,
            py::arg("self_contact") = ContactSettings{}.self_contact,
-           py::arg("min_separation") = ContactSettings{}.min_separation)
+           py::arg("min_separation") = ContactSettings{}.min_separation,
+           py::arg("hessian") = enum_name(ContactSettings{}.hessian, kBarrierHessians))
       .def_readwrite("thickness", &ContactSettings::thickness,
                      "Barrier activation distance dhat, m, > 0.")
       .def_readwrite("stiffness", &ContactSettings::stiffness,
@@ -311,11 +316,19 @@ void bind_colliders(py::module_& m) {
                      "Whether the cloth also repels itself.")
       .def_readwrite("min_separation", &ContactSettings::min_separation,
                      "Fraction of a pair's distance CCD keeps, in (0, 1).")
+      .def_property(
+          "hessian", [](const ContactSettings& s) { return enum_name(s.hessian, kBarrierHessians); },
+          [](ContactSettings& s, const std::string& name) {
+            s.hessian = parse_enum(name, kBarrierHessians, "hessian");
+          },
+          "How each pair's barrier Hessian is formed: 'projected' (exact, eigen-projected) or "
+          "'gauss_newton' (rank one, PSD by construction).")
       .def("__repr__", [](const ContactSettings& s) {
         return "ContactSettings(thickness=" + repr_number(s.thickness) +
                ", stiffness=" + repr_number(s.stiffness) +
                ", self_contact=" + (s.self_contact ? "True" : "False") +
-               ", min_separation=" + repr_number(s.min_separation) + ")";
+               ", min_separation=" + repr_number(s.min_separation) + ", hessian='" +
+               enum_name(s.hessian, kBarrierHessians) + "')";
       });
 
   py::class_<AirSettings>(m, "AirSettings",

@@ -160,6 +160,9 @@ def test_ground_contact_air():
     contact = animkit.ContactSettings(thickness=0.004)
     assert contact.thickness == 0.004 and contact.self_contact
     assert repr(contact).startswith("ContactSettings(thickness=0.004")
+    assert contact.hessian == "projected" and repr(contact).endswith("hessian='projected')")
+    contact.hessian = "gauss_newton"
+    assert animkit.ContactSettings(hessian="gauss_newton").hessian == contact.hessian
     air = animkit.AirSettings(wind=(1, 0, 0), gust=(0.5, 0, 0))
     np.testing.assert_array_equal(air.wind, [1, 0, 0])
     assert air.density == 1.2
@@ -171,6 +174,10 @@ def test_ground_contact_air():
         animkit.ContactSettings(thickness=0)
     with pytest.raises(animkit.Error):
         animkit.ContactSettings(min_separation=1.5)
+    with pytest.raises(animkit.Error, match="unknown hessian 'exact'"):
+        animkit.ContactSettings(hessian="exact")
+    with pytest.raises(animkit.Error, match="unknown hessian"):
+        contact.hessian = "exact"
     with pytest.raises(animkit.Error):
         animkit.AirSettings(gust_frequency=0)
     with pytest.raises(animkit.Error):

@@ -195,6 +195,14 @@ class SceneReader {
     contact.thickness = fields.number("thickness").value_or(contact.thickness);
     contact.stiffness = fields.number("stiffness").value_or(contact.stiffness);
     contact.self_contact = fields.boolean("self_contact").value_or(contact.self_contact);
+    if (auto hessian = fields.string("hessian")) {
+      if (*hessian == "projected")
+        contact.hessian = BarrierHessian::projected;
+      else if (*hessian == "gauss_newton")
+        contact.hessian = BarrierHessian::gauss_newton;
+      else
+        fields.error("hessian", "expected projected or gauss_newton, got " + quote_input(*hessian));
+    }
     fields.finish();
   }
 

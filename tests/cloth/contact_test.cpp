@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -87,23 +88,72 @@ TEST(Contact, AClothThrownAtASphereAt20MetresPerSecondNeverPassesThrough) {
   EXPECT_GT(most_contacts, 20);  // it did hit the ball (then slides off it, frictionless)
 }
 
-TEST(Contact, ASheetSettlesOnTheGroundWithinItsThicknessAndPinsHold) {
+// Either barrier Hessian (ContactSettings::hessian) lets the sheet settle the same way.
+class ContactHessian : public ::testing::TestWithParam<BarrierHessian> {};
+
+TEST_P(ContactHessian, ASheetSettlesOnTheGroundWithinItsThicknessAndPinsHold) {
   ClothDesc desc = cotton_sheet(8, 0.05, Vec3::Zero());
   desc.particles[0].pinned = true;  // one corner held 5 cm up
   const Vec3 pinned = desc.particles[0].position;
   auto sim = ClothSimulator::create(desc, multigrid_newton(1e-4));
   ASSERT_TRUE(sim);
   auto contact = ContactTerm::create(std::make_shared<const ClothModel>(sim->model()),
-                                     {.thickness = 2e-3}, {.meshes = {}, .ground_height = 0.0});
+                                     {.thickness = 2e-3, .hessian = GetParam()},
+                                     {.meshes = {}, .ground_height = 0.0});
   ASSERT_TRUE(contact);
   ASSERT_TRUE(sim->add_energy_term(*contact));
-  for (int frame = 0; frame < 60; ++frame) ASSERT_TRUE(sim->step(1.0 / 60.0));
+  int converged = 0;
+  for (int frame = 0; frame < 60; ++frame) {
+    const auto report = sim->step(1.0 / 60.0);
+    ASSERT_TRUE(report);
+    converged += report->converged ? 1 : 0;
+  }
+  EXPECT_EQ(converged, 60);
   EXPECT_EQ(sim->state().position(0), pinned);
   double lowest = std::numeric_limits<double>::infinity();
   for (int i = 0; i < sim->model().particle_count(); ++i)
     lowest = std::min(lowest, sim->state().position(i).y());
   EXPECT_GT(lowest, 0.0);
   EXPECT_LT(lowest, 2e-3);  // resting within the barrier's reach
+}
+
+INSTANTIATE_TEST_SUITE_P(BothHessians, ContactHessian,
+                         ::testing::Values(BarrierHessian::projected,
+                                           BarrierHessian::gauss_newton));
+
+// The Gauss-Newton choice assembles, pair by pair, exactly contact_barrier_gauss_newton_hessian
+// times kappa: a positive semi-definite matrix that is not the projected one.
+TEST(Contact, TheGaussNewtonHessianIsPositiveSemiDefiniteAndDiffersFromTheProjectedOne) {
+  auto sim = ClothSimulator::create(cotton_sheet(4, 0.0012, Vec3::Zero()), {});
+  ASSERT_TRUE(sim);
+  const auto model = std::make_shared<const ClothModel>(sim->model());
+  const int n = model->particle_count();
+  Eigen::VectorXd x = sim->state().positions;
+  for (Eigen::Index k = 0; k < x.size(); ++k) x[k] += 2e-4 * std::sin(1.9 * static_cast<double>(k));
+  auto dense_hessian = [&](BarrierHessian kind) {
+    auto contact = ContactTerm::create(
+        model, {.thickness = 2e-3, .hessian = kind},
+        {.meshes = {sphere(Vec3(0.0, -0.2985, 0.0), 0.3)}, .ground_height = 0.0});
+    EXPECT_TRUE(contact);
+    ContactTerm& term = **contact;
+    term.prepare(sim->state(), 1.0 / 60.0);
+    term.update(x);
+    EXPECT_GT(term.stats(x).active_pairs, 0);
+    std::vector<HessianBlock> blocks;
+    term.add_hessian(x, true, blocks);
+    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+    for (const HessianBlock& b : blocks) {
+      dense.block<3, 3>(3 * b.row, 3 * b.col) += b.value;
+      if (b.row != b.col) dense.block<3, 3>(3 * b.col, 3 * b.row) += b.value.transpose();
+    }
+    return dense;
+  };
+  const Eigen::MatrixXd gauss_newton = dense_hessian(BarrierHessian::gauss_newton);
+  const Eigen::MatrixXd projected = dense_hessian(BarrierHessian::projected);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gauss_newton);
+  ASSERT_GT(eigen.eigenvalues().maxCoeff(), 0.0);
+  EXPECT_GE(eigen.eigenvalues().minCoeff(), -1e-9 * eigen.eigenvalues().maxCoeff());
+  EXPECT_GT((gauss_newton - projected).norm(), 1e-6 * projected.norm());
 }
 
 TEST(Contact, GradientMatchesFiniteDifferences) {

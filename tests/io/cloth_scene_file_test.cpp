@@ -44,7 +44,7 @@ TEST(ClothSceneFile, ReadsEveryPart) {
       {"shape": "capsule", "radius": 0.1, "half_length": 0.2, "position": [2, 0, 0]}],
     "ground": {"height": -0.1, "friction": 0.4},
     "contact": {"thickness": 0.004, "self_contact": false, "self_friction": 0.2,
-                "friction_passes": 2},
+                "friction_passes": 2, "hessian": "gauss_newton"},
     "wind": {"velocity": [3, 0, 0], "gust": [1, 0, 0], "gust_frequency": 0.25},
     "solver": {"integrator": "implicit-multigrid", "tolerance": 1e-4},
     "dt": 0.02, "frames": 12})");
@@ -70,6 +70,7 @@ TEST(ClothSceneFile, ReadsEveryPart) {
   EXPECT_DOUBLE_EQ(scene->ground->friction, 0.4);
   EXPECT_DOUBLE_EQ(scene->contact.thickness, 0.004);
   EXPECT_FALSE(scene->contact.self_contact);
+  EXPECT_EQ(scene->contact.hessian, BarrierHessian::gauss_newton);
   EXPECT_DOUBLE_EQ(scene->self_friction, 0.2);
   EXPECT_EQ(scene->friction_passes, 2);
   ASSERT_TRUE(scene->air);
@@ -144,6 +145,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "cloth.mass: the material sets masses, stiffnesses and damping"},
         BadScene{R"({"cloth": {"pins": "all"}})",
                  "cloth.pins: expected corners, edge or none, got 'all'"},
+        BadScene{R"({"contact": {"hessian": "exact"}})",
+                 "contact.hessian: expected projected or gauss_newton, got 'exact'"},
         BadScene{R"({"colliders": [{"shape": "cube"}]})",
                  "colliders[0].shape: expected sphere, box, capsule or mesh, got 'cube'"},
         BadScene{R"({"colliders": [{"radius": "big"}]})",

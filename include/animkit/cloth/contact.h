@@ -30,6 +30,17 @@ namespace animkit {
 
 struct ContactGeometry;  // src/cloth/contact/contact_candidates.h (internal)
 
+/// How a contact pair's barrier enters Newton's matrix (its gradient is always exact).
+enum class BarrierHessian : std::uint8_t {
+  /// The exact Hessian of the pair's barrier, projected onto the PSD cone by a 12 x 12
+  /// eigendecomposition per pair (IPC, Li et al. 2020, section 4.3).
+  projected,
+  /// Gauss-Newton: the barrier's curvature along the distance alone, a rank-one matrix that is
+  /// PSD by construction (Offset Geometric Contact, Chen et al. 2025, section 3.6); no
+  /// eigendecomposition, and Newton's direction stays a descent direction.
+  gauss_newton,
+};
+
 struct ContactSettings {
   /// dhat, m: the barrier acts on pairs closer than this (the cloth's thickness), > 0.
   double thickness = 2e-3;
@@ -41,6 +52,9 @@ struct ContactSettings {
   /// CCD keeps every pair at least this fraction of its distance at the start of a step, so
   /// no iterate gets closer than that to contact: in (0, 1).
   double min_separation = 0.1;
+  /// How each pair's barrier Hessian is formed; both keep every iterate intersection-free
+  /// (CCD bounds every step whatever the direction).
+  BarrierHessian hessian = BarrierHessian::projected;
 
   std::optional<Error> validate() const;
 };

@@ -42,6 +42,7 @@ class ImplicitEuler final : public ClothIntegrator {
   // The stages of a substep, in order (see step()).
   double start_substep(const ClothState& state, double h, const Eigen::VectorXd* external_forces,
                        StepReport& report);
+  double lowest_start(const Eigen::VectorXd& start, double bound) const;
   bool next_lagging_pass(const GradientStop& stop, double& gradient_norm, StepReport& report);
   double newton_direction(double gradient_norm, double relative_gradient, IterationRecord& record,
                           StepReport& report);

@@ -81,7 +81,7 @@ struct ContactTerm::Impl {
   // Per pair at x, each pair into its own slot, computed over the threads (the pairs are then
   // summed in their order, so the bits do not depend on the thread count): the barrier's
   // gradient (without kappa; zero beyond dhat), or whether the pair is active and its
-  // projected Hessian.
+  // PSD Hessian (ContactSettings::hessian).
   mutable std::vector<Eigen::Matrix<double, 12, 1>> pair_gradients;
   mutable std::vector<char> pair_active;
   mutable std::vector<Eigen::Matrix<double, 12, 12>> pair_hessians;
@@ -105,8 +105,11 @@ struct ContactTerm::Impl {
       const ContactPair& pair = pairs[at];
       const std::array<Vec3, 4> p = positions(x, pair);
       pair_active[at] = contact_distance_squared(pair, p, ground_height()) < barrier.dhat();
-      if (pair_active[at])
-        pair_hessians[at] = contact_barrier_derivatives(pair, p, ground_height(), barrier).hessian;
+      if (!pair_active[at]) return;
+      pair_hessians[at] =
+          settings.hessian == BarrierHessian::gauss_newton
+              ? contact_barrier_gauss_newton_hessian(pair, p, ground_height(), barrier)
+              : contact_barrier_derivatives(pair, p, ground_height(), barrier).hessian;
     });
   }
 };
