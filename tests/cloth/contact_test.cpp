@@ -118,8 +118,11 @@ TEST_P(ContactHessian, ASheetSettlesOnTheGroundWithinItsThicknessAndPinsHold) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothHessians, ContactHessian,
-                         ::testing::Values(BarrierHessian::projected,
-                                           BarrierHessian::gauss_newton));
+                         ::testing::Values(BarrierHessian::projected, BarrierHessian::gauss_newton),
+                         [](const ::testing::TestParamInfo<BarrierHessian>& hessian) {
+                           return hessian.param == BarrierHessian::projected ? "projected"
+                                                                          : "gauss_newton";
+                         });
 
 // The Gauss-Newton choice assembles, pair by pair, exactly contact_barrier_gauss_newton_hessian
 // times kappa: a positive semi-definite matrix that is not the projected one.
