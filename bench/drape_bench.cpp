@@ -259,10 +259,9 @@ int main(int argc, char** argv) {
        {.velocity_tolerance = 1e-3, .hessian = animkit::BarrierHessian::gauss_newton}},
   };
   for (const auto& [name, variant] : variants) {
-    benchmark::RegisterBenchmark((std::string("drape/animkit/41x41/") + name).c_str(),
-                                 [whole, variant](benchmark::State& s) {
-                                   animkit_drape(s, 41, whole, variant);
-                                 })
+    benchmark::RegisterBenchmark(
+        (std::string("drape/animkit/41x41/") + name).c_str(),
+        [whole, variant](benchmark::State& s) { animkit_drape(s, 41, whole, variant); })
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
   }

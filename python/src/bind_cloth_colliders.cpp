@@ -17,8 +17,14 @@
 namespace animkit::python {
 namespace {
 
-constexpr Named<BarrierHessian> kBarrierHessians[] = {
-    {"projected", BarrierHessian::projected}, {"gauss_newton", BarrierHessian::gauss_newton}};
+// The library's names (kBarrierHessianNames); animkit.Error for another.
+BarrierHessian barrier_hessian_from(const std::string& name) {
+  if (const auto hessian = barrier_hessian_named(name)) return *hessian;
+  std::string expected;
+  for (const std::string_view known : kBarrierHessianNames)
+    expected += (expected.empty() ? "" : ", ") + std::string(known);
+  raise("unknown hessian '" + name + "' (expected one of: " + expected + ")");
+}
 
 // ---- colliders ----
 
@@ -295,10 +301,10 @@ void bind_colliders(py::module_& m) {
       m, "ContactSettings",
       "Contact between the cloth and colliders, ground and itself (Incremental Potential "
       "Contact: a log barrier within `thickness`, continuous collision detection).")
-      .def(py::init([](double thickness, double stiffness, bool self_contact,
-                       double min_separation, const std::string& hessian) {
+      .def(py::init([](double thickness, double stiffness, bool self_contact, double min_separation,
+                       const std::string& hessian) {
              ContactSettings s{thickness, stiffness, self_contact, min_separation,
-                               parse_enum(hessian, kBarrierHessians, "hessian")};
+                               barrier_hessian_from(hessian)};
              check(s.validate());
              return s;
            }),
@@ -307,7 +313,7 @@ void bind_colliders(py::module_& m) {
            py::arg("stiffness") = ContactSettings{}.stiffness,
            py::arg("self_contact") = ContactSettings{}.self_contact,
            py::arg("min_separation") = ContactSettings{}.min_separation,
-           py::arg("hessian") = enum_name(ContactSettings{}.hessian, kBarrierHessians))
+           py::arg("hessian") = std::string(barrier_hessian_name(ContactSettings{}.hessian)))
       .def_readwrite("thickness", &ContactSettings::thickness,
                      "Barrier activation distance dhat, m, > 0.")
       .def_readwrite("stiffness", &ContactSettings::stiffness,
@@ -317,9 +323,10 @@ void bind_colliders(py::module_& m) {
       .def_readwrite("min_separation", &ContactSettings::min_separation,
                      "Fraction of a pair's distance CCD keeps, in (0, 1).")
       .def_property(
-          "hessian", [](const ContactSettings& s) { return enum_name(s.hessian, kBarrierHessians); },
+          "hessian",
+          [](const ContactSettings& s) { return std::string(barrier_hessian_name(s.hessian)); },
           [](ContactSettings& s, const std::string& name) {
-            s.hessian = parse_enum(name, kBarrierHessians, "hessian");
+            s.hessian = barrier_hessian_from(name);
           },
           "How each pair's barrier Hessian is formed: 'projected' (exact, eigen-projected) or "
           "'gauss_newton' (rank one, PSD by construction).")
@@ -328,7 +335,7 @@ void bind_colliders(py::module_& m) {
                ", stiffness=" + repr_number(s.stiffness) +
                ", self_contact=" + (s.self_contact ? "True" : "False") +
                ", min_separation=" + repr_number(s.min_separation) + ", hessian='" +
-               enum_name(s.hessian, kBarrierHessians) + "')";
+               std::string(barrier_hessian_name(s.hessian)) + "')";
       });
 
   py::class_<AirSettings>(m, "AirSettings",

@@ -195,13 +195,15 @@ class SceneReader {
     contact.thickness = fields.number("thickness").value_or(contact.thickness);
     contact.stiffness = fields.number("stiffness").value_or(contact.stiffness);
     contact.self_contact = fields.boolean("self_contact").value_or(contact.self_contact);
-    if (auto hessian = fields.string("hessian")) {
-      if (*hessian == "projected")
-        contact.hessian = BarrierHessian::projected;
-      else if (*hessian == "gauss_newton")
-        contact.hessian = BarrierHessian::gauss_newton;
-      else
-        fields.error("hessian", "expected projected or gauss_newton, got " + quote_input(*hessian));
+    if (auto name = fields.string("hessian")) {
+      const std::optional<BarrierHessian> hessian = barrier_hessian_named(*name);
+      if (!hessian) {
+        std::string expected;
+        for (const std::string_view known : kBarrierHessianNames)
+          expected += (expected.empty() ? "" : " or ") + std::string(known);
+        fields.error("hessian", "expected " + expected + ", got " + quote_input(*name));
+      }
+      contact.hessian = *hessian;
     }
     fields.finish();
   }

@@ -120,8 +120,7 @@ TEST_P(ContactHessian, ASheetSettlesOnTheGroundWithinItsThicknessAndPinsHold) {
 INSTANTIATE_TEST_SUITE_P(BothHessians, ContactHessian,
                          ::testing::Values(BarrierHessian::projected, BarrierHessian::gauss_newton),
                          [](const ::testing::TestParamInfo<BarrierHessian>& hessian) {
-                           return hessian.param == BarrierHessian::projected ? "projected"
-                                                                          : "gauss_newton";
+                           return std::string(barrier_hessian_name(hessian.param));
                          });
 
 // The Gauss-Newton choice assembles, pair by pair, exactly contact_barrier_gauss_newton_hessian

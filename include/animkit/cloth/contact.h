@@ -15,9 +15,11 @@
 // displacement inside VBD-style local solves, and on this project's stiff cloth VBD does not
 // reach 1e-4 relative gradient at all (README, stiff cloth: 0% of cotton's steps within 1000
 // sweeps), where Newton with multigrid converges every step; IPC rides on that Newton.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "animkit/cloth/cloth_model.h"
@@ -40,6 +42,19 @@ enum class BarrierHessian : std::uint8_t {
   /// eigendecomposition, and Newton's direction stays a descent direction.
   gauss_newton,
 };
+
+/// Each BarrierHessian's name (scene files, Python), in the enum's order: the only list.
+inline constexpr std::array<std::string_view, 2> kBarrierHessianNames = {"projected",
+                                                                         "gauss_newton"};
+inline std::string_view barrier_hessian_name(BarrierHessian hessian) {
+  return kBarrierHessianNames[static_cast<std::size_t>(hessian)];
+}
+/// The choice called `name`, or none.
+inline std::optional<BarrierHessian> barrier_hessian_named(std::string_view name) {
+  for (std::size_t i = 0; i < kBarrierHessianNames.size(); ++i)
+    if (kBarrierHessianNames[i] == name) return static_cast<BarrierHessian>(i);
+  return std::nullopt;
+}
 
 struct ContactSettings {
   /// dhat, m: the barrier acts on pairs closer than this (the cloth's thickness), > 0.
