@@ -54,10 +54,10 @@ viewer: deps
 test-deps:
 	bash scripts/install-deps.sh --tests
 
-# Every test, the slow tier included (the costliest start first, beside the short ones).
-test-release: deps test-deps
-	$(CONFIGURE_RELEASE)
-	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS)
+# Every test, the slow tier included (the costliest start first, beside the short ones). The
+# test packages install while the Release tree compiles (scripts/with-test-deps.sh).
+test-release: deps
+	bash scripts/with-test-deps.sh sh -c '$(CONFIGURE_RELEASE) && $(CMAKE) --build $(RELEASE_DIR) -j $(JOBS)'
 	cd $(RELEASE_DIR) && ctest --output-on-failure -j $(JOBS)
 
 # Every test but the slow tier: the whole-scene audits and the reach statistics take minutes in

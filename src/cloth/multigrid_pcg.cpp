@@ -31,9 +31,11 @@ PcgResult MultigridPcg::solve(const BlockHessian& a, const Eigen::VectorXd& b, E
     result.relative_residual = 1.0;
     return result;
   }
-  // The V-cycle is SPD when A is; for an indefinite A (the exact Hessian) CG reports it.
+  // The V-cycle is SPD when A is; for an indefinite A (the exact Hessian) CG reports it. The
+  // products use the finest level's assembled A (SmoothedAggregation::multiply_finest).
   return preconditioned_cg(
-      model_, a, b, x, tolerance, max_iterations,
+      [this](const Eigen::VectorXd& p, Eigen::VectorXd& ap) { multigrid_->multiply_finest(p, ap); },
+      b, x, tolerance, max_iterations,
       [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { multigrid_->apply(r, z); },
       workspace_);
 }

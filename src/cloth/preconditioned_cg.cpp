@@ -29,6 +29,14 @@ PcgResult preconditioned_cg(const ClothModel& model, const BlockHessian& a,
                             const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance,
                             int max_iterations, const Preconditioner& precondition,
                             CgWorkspace& w) {
+  return preconditioned_cg(
+      [&](const Eigen::VectorXd& p, Eigen::VectorXd& ap) { a.multiply(model, p, ap); }, b, x,
+      tolerance, max_iterations, precondition, w);
+}
+
+PcgResult preconditioned_cg(const LinearOperator& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                            double tolerance, int max_iterations,
+                            const Preconditioner& precondition, CgWorkspace& w) {
   const int n = static_cast<int>(b.size() / 3);
   PcgResult result;
   x.setZero();
@@ -51,7 +59,7 @@ PcgResult preconditioned_cg(const ClothModel& model, const BlockHessian& a,
     return result;
   }
   while (result.iterations < max_iterations) {
-    a.multiply(model, w.p, w.ap);
+    a(w.p, w.ap);
     const double curvature = dot(w.p, w.ap, w);
     if (!(curvature > 0.0)) {
       result.indefinite = true;

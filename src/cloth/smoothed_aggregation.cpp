@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "../core/parallel.h"
 #include "aggregation.h"
 
 namespace animkit {
@@ -162,12 +163,12 @@ void SmoothedAggregation::fill_finest(const BlockHessian& hessian) {
     a.values[spring_blocks_[s][0]] -= hessian.coupling[s];
     a.values[spring_blocks_[s][1]] -= hessian.coupling[s];
   }
-  // The terms' diagonal blocks are in hessian.diagonal already; their couplings go beside.
+  // The terms' diagonal blocks are in hessian.diagonal already; their couplings go beside
+  // (the products always use them; the smoother and the coarse levels with coarse_couplings).
   CouplingBlocks& coupling = levels_[0].coupling;
   coupling.clear(a.block_rows);
   for (const HessianBlock& block : hessian.extra) {
-    if (options_.coarse_couplings && block.row != block.col)
-      coupling.add(block.row, block.col, block.value);
+    if (block.row != block.col) coupling.add(block.row, block.col, block.value);
   }
   coupling.assemble();
 }
@@ -227,39 +228,51 @@ bool SmoothedAggregation::update(const BlockHessian& hessian) {
     prepare_smoother(levels_[l]);
     if (options_.resmooth) smooth_prolongator(levels_[l]);
     levels_[l].galerkin.compute(levels_[l].a, levels_[l].p, levels_[l + 1].a);
-    levels_[l].coupling.restrict_to(levels_[l].p, levels_[l + 1].coupling, levels_[l + 1].a,
-                                    levels_[l + 1].diagonal);
+    if (options_.coarse_couplings) {
+      levels_[l].coupling.restrict_to(levels_[l].p, levels_[l + 1].coupling, levels_[l + 1].a,
+                                      levels_[l + 1].diagonal);
+    }
   }
   prepare_smoother(levels_.back());
   return factorize_coarsest();
 }
 
+const SmoothedAggregation::Matrix* SmoothedAggregation::couplings(const Level& level) const {
+  // Without coarse_couplings only the diagonal blocks of the terms' Hessians reach the
+  // preconditioner (the finest level's couplings are then there for multiply_finest alone).
+  return options_.coarse_couplings ? &level.coupling.full() : nullptr;
+}
+
 void SmoothedAggregation::forward_sweep(Level& level) {
   const Matrix& a = level.a;
-  const Matrix& e = level.coupling.full();
+  const Matrix* e = couplings(level);
   for (int i = 0; i < a.block_rows; ++i) {
     Eigen::Vector3d sum = level.b.segment<3>(3 * i);
     for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
       if (k != level.diagonal[i])
         sum.noalias() -= a.values[k] * level.x.segment<3>(3 * a.column[k]);
     }
-    for (int k = e.row_start[i]; k < e.row_start[i + 1]; ++k)
-      sum.noalias() -= e.values[k] * level.x.segment<3>(3 * e.column[k]);
+    if (e != nullptr) {
+      for (int k = e->row_start[i]; k < e->row_start[i + 1]; ++k)
+        sum.noalias() -= e->values[k] * level.x.segment<3>(3 * e->column[k]);
+    }
     level.x.segment<3>(3 * i).noalias() = level.inverse_diagonal[i] * sum;
   }
 }
 
 void SmoothedAggregation::backward_sweep(Level& level) {
   const Matrix& a = level.a;
-  const Matrix& e = level.coupling.full();
+  const Matrix* e = couplings(level);
   for (int i = a.block_rows - 1; i >= 0; --i) {
     Eigen::Vector3d sum = level.b.segment<3>(3 * i);
     for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
       if (k != level.diagonal[i])
         sum.noalias() -= a.values[k] * level.x.segment<3>(3 * a.column[k]);
     }
-    for (int k = e.row_start[i]; k < e.row_start[i + 1]; ++k)
-      sum.noalias() -= e.values[k] * level.x.segment<3>(3 * e.column[k]);
+    if (e != nullptr) {
+      for (int k = e->row_start[i]; k < e->row_start[i + 1]; ++k)
+        sum.noalias() -= e->values[k] * level.x.segment<3>(3 * e->column[k]);
+    }
     level.x.segment<3>(3 * i).noalias() = level.inverse_diagonal[i] * sum;
   }
 }
@@ -274,13 +287,26 @@ void SmoothedAggregation::cycle(std::size_t l) {
   level.x.setZero();
   for (int s = 0; s < options_.smoothing_sweeps; ++s) forward_sweep(level);
   level.a.multiply(level.x, level.r);
-  level.coupling.full().multiply_add(level.x, level.r);
+  if (const Matrix* e = couplings(level)) e->multiply_add(level.x, level.r);
   level.r = level.b - level.r;
   Level& next = levels_[l + 1];
   level.p.multiply_transpose(level.r, next.b);
   cycle(l + 1);
   level.p.multiply_add(next.x, level.x);
   for (int s = 0; s < options_.smoothing_sweeps; ++s) backward_sweep(level);
+}
+
+void SmoothedAggregation::multiply_finest(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  const Matrix& a = levels_[0].a;
+  const Matrix& e = levels_[0].coupling.full();
+  parallel::for_each(a.block_rows, [&](int i) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k)
+      sum.noalias() += a.values[k] * x.segment<3>(3 * a.column[k]);
+    for (int k = e.row_start[i]; k < e.row_start[i + 1]; ++k)
+      sum.noalias() += e.values[k] * x.segment<3>(3 * e.column[k]);
+    y.segment<3>(3 * i) = sum;
+  });
 }
 
 void SmoothedAggregation::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) {

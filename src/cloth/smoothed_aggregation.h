@@ -46,6 +46,10 @@ class SmoothedAggregation {
   bool update(const BlockHessian& a);
   /// z = B r, one V-cycle; B approximates A^-1 and is symmetric positive definite.
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z);
+  /// y = A x with the A of the last update(): the finest level's blocks and the energy terms'
+  /// couplings, assembled (one block per pair of particles, duplicates summed). The same
+  /// operator as BlockHessian::multiply, in rows: no scattered additions per term block.
+  void multiply_finest(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
 
   int level_count() const { return static_cast<int>(levels_.size()); }
   /// Nodes (3 unknowns each) on level l (0: the particles).
@@ -71,6 +75,8 @@ class SmoothedAggregation {
   void prepare_smoother(Level& level);
   void smooth_prolongator(Level& level);
   bool factorize_coarsest();
+  // The level's couplings the V-cycle uses (MultigridOptions::coarse_couplings), or none.
+  const Matrix* couplings(const Level& level) const;
   void forward_sweep(Level& level);
   void backward_sweep(Level& level);
   void cycle(std::size_t l);

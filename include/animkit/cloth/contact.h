@@ -94,6 +94,9 @@ struct ContactStats {
   int active_pairs = 0;       ///< pairs within dhat
   double min_distance = 0.0;  ///< m, the smallest distance of an active pair (dhat if none)
   int candidate_pairs = 0;    ///< pairs the broad phase gathered
+  /// How often the broad phase ran since the term was made: when an iterate or a step left the
+  /// region its last pairs cover, not every iteration.
+  std::int64_t gathers = 0;
 };
 
 /// Where one active pair (closer than the thickness) is closest, for drawing contacts.

@@ -32,9 +32,16 @@ struct CgWorkspace {
 /// z = B r for an SPD B ~ A^-1.
 using Preconditioner = std::function<void(const Eigen::VectorXd& r, Eigen::VectorXd& z)>;
 
+/// y = A x.
+using LinearOperator = std::function<void(const Eigen::VectorXd& x, Eigen::VectorXd& y)>;
+
 /// Solves A x = b from x = 0 until |b - A x| <= tolerance |b|, `max_iterations`, or a sign that
 /// A is not positive definite. Its vector operations run on the library's threads, with sums
 /// over fixed chunks: the same bits for any thread count.
+PcgResult preconditioned_cg(const LinearOperator& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                            double tolerance, int max_iterations,
+                            const Preconditioner& precondition, CgWorkspace& w);
+/// The same with A the Newton system's blocks (BlockHessian::multiply).
 PcgResult preconditioned_cg(const ClothModel& model, const BlockHessian& a,
                             const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance,
                             int max_iterations, const Preconditioner& precondition, CgWorkspace& w);

@@ -11,6 +11,7 @@
 #include "contact_candidates.h"
 #include "contact_pair.h"
 #include "contact_points.h"
+#include "gather_region.h"
 #include "moving_obstacles.h"
 
 namespace animkit {
@@ -31,6 +32,11 @@ constexpr int kPairWeight = 64;
 // of its next step (EnergyTerm::gaps_healthy): resting cloth sits near half the thickness, the
 // substep's start at a tenth of its gap.
 constexpr double kHealthyGapFraction = 0.1;
+
+// The smallest reach of a gather (gather_region.h), as a fraction of the thickness: Newton's
+// corrections on resting cloth are far shorter, and a wider floor would gather more pairs that
+// the barrier then skips.
+constexpr double kMinReachFraction = 0.25;
 
 }  // namespace
 
@@ -63,6 +69,8 @@ struct ContactTerm::Impl {
   MovingObstacles moving;
   int first_collider_vertex = 0;   // colliders' vertices follow the fixed meshes'
   std::vector<ContactPair> pairs;  // what value, gradient and Hessian sum over
+  GatherRegion region;             // where `pairs` holds every pair within dhat
+  std::int64_t gathers = 0;
   mutable Eigen::VectorXd moved;   // difference()'s workspace
   bool rest_lengths_known = false;
 
@@ -77,6 +85,20 @@ struct ContactTerm::Impl {
     return p;
   }
   double ground_height() const { return ground.value_or(0.0); }
+
+  // Gathers the pairs for boxes around x that hold x + step (gather_region.h). A non-finite
+  // x or step finds none, and leaves no region.
+  bool gather(const Eigen::VectorXd& x, const Eigen::VectorXd* step) {
+    ++gathers;
+    region.set(x, step, kMinReachFraction * settings.thickness, geometry.obstacle_positions);
+    if (!finder.gather(geometry, region.lower(), &region.extent(), settings.thickness, ground,
+                       pairs)) {
+      pairs.clear();
+      region.clear();
+      return false;
+    }
+    return true;
+  }
 
   // Per pair at x, each pair into its own slot, computed over the threads (the pairs are then
   // summed in their order, so the bits do not depend on the thread count): the barrier's
@@ -223,26 +245,26 @@ bool ContactTerm::settled() const {
 
 void ContactTerm::advance(Eigen::VectorXd& x) {
   // Moving colliders advance toward the substep's end, pushing the cloth in their way, as far
-  // as CCD allows (moving_obstacles.h), then stay there for this iteration's line search.
+  // as CCD allows (moving_obstacles.h), then stay there for this iteration's line search. The
+  // move gathers its own pairs into `pairs`: update() gathers again.
+  if (!impl_->moving.settled()) impl_->region.clear();
   impl_->moving.advance(impl_->geometry, impl_->finder, impl_->model->pinned, impl_->ground,
                         impl_->settings.thickness, impl_->settings.min_separation, x, impl_->pairs);
 }
 
 void ContactTerm::update(const Eigen::VectorXd& x) {
-  // Every pair within dhat of x: what g's gradient and Hessian at x need. A non-finite x finds
-  // none (g's own gradient there is not finite, and Newton stops).
-  if (!impl_->finder.gather(impl_->geometry, x, nullptr, impl_->settings.thickness, impl_->ground,
-                            impl_->pairs)) {
-    impl_->pairs.clear();
-  }
+  // Every pair within dhat of x: what g's gradient and Hessian at x need; the pairs of the last
+  // gather still hold them while x is inside its region. A non-finite x finds none (g's own
+  // gradient there is not finite, and Newton stops).
+  if (!impl_->region.covers(x, impl_->geometry.obstacle_positions)) impl_->gather(x, nullptr);
 }
 
 double ContactTerm::max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) {
   // Every pair that may come within dhat anywhere on x + t step, t in [0, 1]: the line search
   // evaluates g there, and CCD bounds t by the first time any of them would touch.
-  if (!impl_->finder.gather(impl_->geometry, x, &step, impl_->settings.thickness, impl_->ground,
-                            impl_->pairs)) {
-    return 0.0;  // a non-finite step: take none of it
+  if (!impl_->region.covers(x, impl_->geometry.obstacle_positions) ||
+      !impl_->region.covers_step(x, step)) {
+    if (!impl_->gather(x, &step)) return 0.0;  // a non-finite step: take none of it
   }
   return earliest_contact(impl_->geometry, impl_->pairs, x, step, impl_->ground_height(),
                           impl_->settings.min_separation);
@@ -340,6 +362,7 @@ bool ContactTerm::gaps_healthy(const Eigen::VectorXd& x) const {
 ContactStats ContactTerm::stats(const Eigen::VectorXd& x) const {
   ContactStats stats;
   stats.candidate_pairs = static_cast<int>(impl_->pairs.size());
+  stats.gathers = impl_->gathers;
   double closest = impl_->barrier.dhat();
   for (const ContactPair& pair : impl_->pairs) {
     const double d =
