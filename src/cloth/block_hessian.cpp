@@ -6,6 +6,18 @@ namespace animkit {
 
 void BlockHessian::multiply(const ClothModel& model, const Eigen::VectorXd& p,
                             Eigen::VectorXd& y) const {
+  multiply_without_terms(model, p, y);
+  for (const HessianBlock& block : extra) {  // both ends free (see IncrementalPotential)
+    y.segment<3>(3 * block.row).noalias() += block.value * p.segment<3>(3 * block.col);
+    if (block.row != block.col) {
+      y.segment<3>(3 * block.col).noalias() +=
+          block.value.transpose() * p.segment<3>(3 * block.row);
+    }
+  }
+}
+
+void BlockHessian::multiply_without_terms(const ClothModel& model, const Eigen::VectorXd& p,
+                                          Eigen::VectorXd& y) const {
   // A p = (M / h^2) p + sum over springs of [K -K; -K K] (p_a, p_b): one 3x3 product per
   // spring, K (p_a - p_b), added to a and subtracted from b, instead of a product per block.
   parallel::for_each(static_cast<int>(inertia.size()), [&](int i) {
@@ -23,13 +35,6 @@ void BlockHessian::multiply(const ClothModel& model, const Eigen::VectorXd& p,
     if (free_a) y.segment<3>(3 * a) += kd;
     if (free_b) y.segment<3>(3 * b) -= kd;
   });
-  for (const HessianBlock& block : extra) {  // both ends free (see IncrementalPotential)
-    y.segment<3>(3 * block.row).noalias() += block.value * p.segment<3>(3 * block.col);
-    if (block.row != block.col) {
-      y.segment<3>(3 * block.col).noalias() +=
-          block.value.transpose() * p.segment<3>(3 * block.row);
-    }
-  }
 }
 
 }  // namespace animkit

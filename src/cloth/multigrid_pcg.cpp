@@ -32,9 +32,12 @@ PcgResult MultigridPcg::solve(const BlockHessian& a, const Eigen::VectorXd& b, E
     return result;
   }
   // The V-cycle is SPD when A is; for an indefinite A (the exact Hessian) CG reports it. The
-  // products use the finest level's assembled A (SmoothedAggregation::multiply_finest).
+  // products take the energy terms' blocks as the hierarchy assembled them (add_term_products).
   return preconditioned_cg(
-      [this](const Eigen::VectorXd& p, Eigen::VectorXd& ap) { multigrid_->multiply_finest(p, ap); },
+      [&](const Eigen::VectorXd& p, Eigen::VectorXd& ap) {
+        a.multiply_without_terms(model_, p, ap);
+        multigrid_->add_term_products(p, ap);
+      },
       b, x, tolerance, max_iterations,
       [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { multigrid_->apply(r, z); },
       workspace_);

@@ -164,13 +164,19 @@ void SmoothedAggregation::fill_finest(const BlockHessian& hessian) {
     a.values[spring_blocks_[s][1]] -= hessian.coupling[s];
   }
   // The terms' diagonal blocks are in hessian.diagonal already; their couplings go beside
-  // (the products always use them; the smoother and the coarse levels with coarse_couplings).
+  // (add_term_products always uses them; the V-cycle with coarse_couplings).
   CouplingBlocks& coupling = levels_[0].coupling;
   coupling.clear(a.block_rows);
+  term_diagonal_.assign(static_cast<std::size_t>(a.block_rows), Matrix3::Zero());
   for (const HessianBlock& block : hessian.extra) {
-    if (block.row != block.col) coupling.add(block.row, block.col, block.value);
+    if (block.row != block.col) {
+      coupling.add(block.row, block.col, block.value);
+    } else {
+      term_diagonal_[static_cast<std::size_t>(block.row)] += block.value;
+    }
   }
   coupling.assemble();
+  has_terms_ = !hessian.extra.empty();
 }
 
 void SmoothedAggregation::prepare_smoother(Level& level) {
@@ -239,7 +245,7 @@ bool SmoothedAggregation::update(const BlockHessian& hessian) {
 
 const SmoothedAggregation::Matrix* SmoothedAggregation::couplings(const Level& level) const {
   // Without coarse_couplings only the diagonal blocks of the terms' Hessians reach the
-  // preconditioner (the finest level's couplings are then there for multiply_finest alone).
+  // preconditioner (the finest level's couplings are then there for add_term_products alone).
   return options_.coarse_couplings ? &level.coupling.full() : nullptr;
 }
 
@@ -296,16 +302,14 @@ void SmoothedAggregation::cycle(std::size_t l) {
   for (int s = 0; s < options_.smoothing_sweeps; ++s) backward_sweep(level);
 }
 
-void SmoothedAggregation::multiply_finest(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
-  const Matrix& a = levels_[0].a;
+void SmoothedAggregation::add_term_products(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  if (!has_terms_) return;
   const Matrix& e = levels_[0].coupling.full();
-  parallel::for_each(a.block_rows, [&](int i) {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k)
-      sum.noalias() += a.values[k] * x.segment<3>(3 * a.column[k]);
+  parallel::for_each(e.block_rows, [&](int i) {
+    Eigen::Vector3d sum = term_diagonal_[static_cast<std::size_t>(i)] * x.segment<3>(3 * i);
     for (int k = e.row_start[i]; k < e.row_start[i + 1]; ++k)
       sum.noalias() += e.values[k] * x.segment<3>(3 * e.column[k]);
-    y.segment<3>(3 * i) = sum;
+    y.segment<3>(3 * i) += sum;
   });
 }
 

@@ -46,10 +46,11 @@ class SmoothedAggregation {
   bool update(const BlockHessian& a);
   /// z = B r, one V-cycle; B approximates A^-1 and is symmetric positive definite.
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z);
-  /// y = A x with the A of the last update(): the finest level's blocks and the energy terms'
-  /// couplings, assembled (one block per pair of particles, duplicates summed). The same
-  /// operator as BlockHessian::multiply, in rows: no scattered additions per term block.
-  void multiply_finest(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  /// y += E x for the energy terms' blocks E of the last update()'s matrix, assembled: their
+  /// diagonal blocks summed per particle, their couplings merged into rows (one block per pair
+  /// of particles). With BlockHessian::multiply_without_terms, the same product as
+  /// BlockHessian::multiply, without its scattered addition of every term block.
+  void add_term_products(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
 
   int level_count() const { return static_cast<int>(levels_.size()); }
   /// Nodes (3 unknowns each) on level l (0: the particles).
@@ -84,6 +85,8 @@ class SmoothedAggregation {
   const ClothModel& model_;
   MultigridOptions options_;
   std::vector<Level> levels_;
+  std::vector<Eigen::Matrix3d> term_diagonal_;  // the terms' diagonal blocks, per particle
+  bool has_terms_ = false;
   std::vector<std::array<int, 2>> spring_blocks_;  // per spring: positions of (a,b), (b,a)
   Eigen::MatrixXd coarsest_dense_;
   Eigen::LLT<Eigen::MatrixXd> coarsest_;

@@ -103,8 +103,10 @@ TEST(Aerodynamics, AFallingPlateReachesTheFlatPlatesTerminalSpeed) {
   EXPECT_NEAR((*air)->time(), 180 * kFrame, 1e-12);
 }
 
-// The mean x (across the pinned edge, which runs along z) of a 1 m cotton sheet after 2 s hanging
-// from two corners in the given wind.
+// The mean x (across the pinned edge, which runs along z) of a 1 m cotton sheet after 1 s hanging
+// from two corners in the given wind. By then a 3 m/s wind holds it about 0.5 m downwind of the
+// still sheet, which swings within 0.07 m of its rest (measured in Release; after 2 s the
+// margins were the same, and the run took twice as long under the sanitizers).
 double mean_x_in_wind(const Vec3& wind) {
   GridClothOptions grid{.cells = 12, .size = 1.0, .gravity = 9.81};
   grid.material = ClothMaterial{};  // cotton's values
@@ -120,7 +122,7 @@ double mean_x_in_wind(const Vec3& wind) {
   auto term = AirTerm::create(sim->model(), air);
   EXPECT_TRUE(term);
   EXPECT_TRUE(sim->add_energy_term(*term));
-  for (int step = 0; step < 120; ++step) EXPECT_TRUE(sim->step(kFrame));
+  for (int step = 0; step < 60; ++step) EXPECT_TRUE(sim->step(kFrame));
   double x = 0.0;
   for (int i = 0; i < sim->model().particle_count(); ++i) x += sim->state().position(i).x();
   return x / sim->model().particle_count();

@@ -57,7 +57,11 @@ SimulationOptions multigrid_newton(double tolerance) {
 }
 
 TEST(Contact, AClothThrownAtASphereAt20MetresPerSecondNeverPassesThrough) {
-  // dt = 1/30 s at 20 m/s: each step's prediction lies 67 cm on, past the whole sphere.
+  // dt = 1/30 s at 20 m/s: each step's prediction lies 67 cm on, past the whole sphere. The
+  // sheet meets the ball in the first step and wraps round it in the next two (the steps
+  // where it could tunnel); then it lies on the ball and slides off it slowly, for about 27
+  // frames. Ten frames keep the impact and seven frames of resting contact, in 56% of the time
+  // of all 30 (measured in Release; the sanitizer build's slowest test).
   auto sim =
       ClothSimulator::create(cotton_sheet(12, 0.45, Vec3(0.0, -20.0, 0.0)), multigrid_newton(1e-4));
   ASSERT_TRUE(sim) << sim.error().message;
@@ -68,7 +72,8 @@ TEST(Contact, AClothThrownAtASphereAt20MetresPerSecondNeverPassesThrough) {
   ASSERT_TRUE(contact) << contact.error().message;
   ASSERT_TRUE(sim->add_energy_term(*contact));
   int converged = 0, most_contacts = 0;
-  for (int frame = 1; frame <= 30; ++frame) {
+  constexpr int kFrames = 10;
+  for (int frame = 1; frame <= kFrames; ++frame) {
     const auto report = sim->step(1.0 / 30.0);
     ASSERT_TRUE(report) << report.error().message;
     converged += report->converged ? 1 : 0;
@@ -84,7 +89,7 @@ TEST(Contact, AClothThrownAtASphereAt20MetresPerSecondNeverPassesThrough) {
       EXPECT_LT(report->step_bound_min, 1.0);  // CCD held the first step back
     }
   }
-  EXPECT_EQ(converged, 30);
+  EXPECT_EQ(converged, kFrames);
   EXPECT_GT(most_contacts, 20);  // it did hit the ball (then slides off it, frictionless)
 }
 

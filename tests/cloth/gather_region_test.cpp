@@ -155,8 +155,8 @@ TEST(GatherRegion, AStepOutsideTheRegionGathersAgainAndStillStopsAtTheGround) {
 }
 
 TEST(GatherRegion, ClothRestingOnABallRunsTheBroadPhaseRarely) {
-  // A cotton sheet dropped onto a ball on the ground, then 20 steps resting on it.
-  GridClothOptions grid{.cells = 10, .size = 0.4, .gravity = 9.81};
+  // A cotton sheet dropped onto a ball on the ground, then 10 steps resting on it.
+  GridClothOptions grid{.cells = 8, .size = 0.4, .gravity = 9.81};
   grid.height = 0.13;
   grid.material = ClothMaterial{};
   ClothDesc desc = make_grid_cloth(grid);
@@ -175,10 +175,10 @@ TEST(GatherRegion, ClothRestingOnABallRunsTheBroadPhaseRarely) {
                           {.meshes = {ball}, .ground_height = -0.1});
   ASSERT_TRUE(contact);
   ASSERT_TRUE(sim->add_energy_term(*contact));
-  for (int frame = 0; frame < 40; ++frame) ASSERT_TRUE(sim->step(1.0 / 30.0));  // settles
+  for (int frame = 0; frame < 20; ++frame) ASSERT_TRUE(sim->step(1.0 / 30.0));  // settles
   const std::int64_t before = (*contact)->stats(sim->state().positions).gathers;
   int newton = 0;
-  for (int frame = 0; frame < 20; ++frame) {
+  for (int frame = 0; frame < 10; ++frame) {
     const auto report = sim->step(1.0 / 30.0);
     ASSERT_TRUE(report);
     newton += report->newton_iterations;
@@ -186,8 +186,8 @@ TEST(GatherRegion, ClothRestingOnABallRunsTheBroadPhaseRarely) {
   const std::int64_t gathers = (*contact)->stats(sim->state().positions).gathers - before;
   // Frictionless, the sheet keeps sliding off the ball a little every step, so a step may
   // gather once; its Newton iterations once gathered twice each.
-  EXPECT_GT(newton, 40);
-  EXPECT_LE(4 * gathers, newton) << gathers << " gathers in " << newton << " Newton iterations";
+  EXPECT_GT(newton, 20);
+  EXPECT_LE(gathers, 10) << gathers << " gathers in " << newton << " Newton iterations";
 }
 
 }  // namespace

@@ -33,6 +33,9 @@ struct BlockHessian {
   /// y = A p for the model's springs. A pinned particle's row is the identity's, and a spring
   /// touching it acts on the free end only.
   void multiply(const ClothModel& model, const Eigen::VectorXd& p, Eigen::VectorXd& y) const;
+  /// y = (M / h^2 + the springs' blocks) p: multiply() without the energy terms' `extra`.
+  void multiply_without_terms(const ClothModel& model, const Eigen::VectorXd& p,
+                              Eigen::VectorXd& y) const;
 };
 
 }  // namespace animkit
