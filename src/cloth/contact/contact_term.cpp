@@ -33,11 +33,6 @@ constexpr int kPairWeight = 64;
 // substep's start at a tenth of its gap.
 constexpr double kHealthyGapFraction = 0.1;
 
-// The smallest reach of a gather (gather_region.h), as a fraction of the thickness: Newton's
-// corrections on resting cloth are far shorter, and a wider floor would gather more pairs that
-// the barrier then skips.
-constexpr double kMinReachFraction = 0.25;
-
 }  // namespace
 
 std::optional<Error> ContactSettings::validate() const {
@@ -90,7 +85,8 @@ struct ContactTerm::Impl {
   // x or step finds none, and leaves no region.
   bool gather(const Eigen::VectorXd& x, const Eigen::VectorXd* step) {
     ++gathers;
-    region.set(x, step, kMinReachFraction * settings.thickness, geometry.obstacle_positions);
+    region.set(x, step, GatherRegion::kFloorFraction * settings.thickness,
+               geometry.obstacle_positions);
     if (!finder.gather(geometry, region.lower(), &region.extent(), settings.thickness, ground,
                        pairs)) {
       pairs.clear();

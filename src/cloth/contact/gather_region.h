@@ -40,6 +40,11 @@ class GatherRegion {
   /// How far past the step that set it a box reaches: the next iterations' steps are mostly
   /// shorter, so they stay inside.
   static constexpr double kMargin = 1.5;
+  /// The floor (min_reach) the contact term gives its boxes, as a fraction of the contact
+  /// thickness: Newton's corrections on resting cloth are far shorter. A floor of the whole
+  /// thickness, to keep the set of cloth sliding on a surface across steps, gathered larger
+  /// sets and was slower (drape-sphere 41 x 41: median step 820 ms against 770 ms).
+  static constexpr double kFloorFraction = 0.25;
 
  private:
   bool inside(double coordinate, Eigen::Index k) const;
