@@ -4,15 +4,15 @@
 
 #include <cmath>
 #include <map>
-#include <numbers>
 #include <string>
 
 #include "animkit/collision/collider_inside.h"
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using testing_support::kPi;
 
 // Closed and consistently oriented: every directed edge appears once and its reverse once, so
 // each undirected edge is shared by exactly two triangles that traverse it oppositely.

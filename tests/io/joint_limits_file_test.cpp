@@ -5,14 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <numbers>
 
 #include "../support/temp_files.h"
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using testing_support::kPi;
 
 Result<JointLimitSet> parse_limits(const std::string& text) {
   return read_joint_limits(text, "limits.json");

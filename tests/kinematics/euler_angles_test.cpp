@@ -6,13 +6,14 @@
 
 #include <gtest/gtest.h>
 
-#include <numbers>
 #include <random>
+
+#include "shared_constants.h"
 
 namespace animkit {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using testing_support::kPi;
 const EulerOrder kOrders[] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
 
 // The rotation matrix built independently: a product of the three axis matrices written out.

@@ -5,11 +5,14 @@
 // be repeated, a definition may not).
 #include <filesystem>
 #include <limits>
+#include <numbers>
 
 namespace animkit::testing_support {
 
 /// One frame at 60 Hz (s).
 inline constexpr double kFrame = 1.0 / 60.0;
+
+inline constexpr double kPi = std::numbers::pi;
 
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
