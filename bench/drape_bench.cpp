@@ -49,7 +49,7 @@ using animkit::Vec3;
 constexpr int kFrames101 = 10;
 
 // The process's CPU time, ms: on a loaded machine a step's wall time counts other programs'
-// turns too (all threads of the process are summed, OpenMP's spinning included).
+// turns too (all threads of the process are summed, the pool workers' spinning included).
 double cpu_ms() {
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);

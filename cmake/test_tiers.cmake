@@ -28,7 +28,7 @@ set(ANIMKIT_SLOW_TEST_FILTER "*Slow.*")
 # ones instead of alone at the end (ctest's own timings replace this after the first run).
 set(ANIMKIT_SLOW_TEST_COST 1000)
 
-# One OpenMP thread a test: ctest -j already gives every core a test, and a second thread per
+# One thread a test (OMP_NUM_THREADS, threads.h): ctest -j already gives every core a test, and a second thread per
 # test only waits for a core (MultigridPcg.CouplingsInTheHierarchySaveIterations, two copies at
 # once under the sanitizers: 62 s each with two threads, 42 s with one). The results are the
 # same bits for any thread count (tests/cloth/parallel_determinism_test.cpp, which sets its own

@@ -11,8 +11,6 @@ packages=(
   libpng-dev libjpeg62-turbo-dev
   # Text drawings: FreeType and the default font, DejaVu Sans.
   libfreetype-dev fonts-dejavu-core
-  # OpenMP runtime for the cloth solvers' threads (also pulled in by g++).
-  libgomp1
   libgtest-dev libgmock-dev libbenchmark-dev
   # Pictures and the viewer: OpenGL through glvnd, Mesa's software renderer (llvmpipe) for EGL
   # without a display and GLX in a window, GLFW and Dear ImGui.
@@ -37,8 +35,8 @@ if [ "${1:-}" = "--tests" ]; then
   # BVH files animkit writes and compares them with what animkit computed, and runs the add-on
   # headless; pytest runs the Python module's tests, matplotlib the examples' plots.
   # The sanitizer tree (tests under ASan + UBSan, and the fuzz targets) is built with clang 16:
-  # its runtime libraries (libFuzzer, ASan, UBSan) and its OpenMP runtime, libomp.
-  packages=(blender python3-pytest python3-matplotlib clang-16 libclang-rt-16-dev libomp-16-dev)
+  # its runtime libraries (libFuzzer, ASan, UBSan).
+  packages=(blender python3-pytest python3-matplotlib clang-16 libclang-rt-16-dev)
 fi
 
 missing=()

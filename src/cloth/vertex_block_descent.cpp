@@ -225,11 +225,9 @@ void VertexBlockDescent::sweep(SweepTotals& totals) {
       for (int k = 0; k < chunk_offsets_[c + 1] - chunk_offsets_[c]; ++k) run_chunk(c, k);
     }
   } else {
-#pragma omp parallel num_threads(threads)
     for (std::size_t c = 0; c + 1 < sweep_offsets_.size(); ++c) {
-      const int chunks = chunk_offsets_[c + 1] - chunk_offsets_[c];
-#pragma omp for schedule(static)
-      for (int k = 0; k < chunks; ++k) run_chunk(c, k);
+      const auto colour_chunk = [&](int k) { run_chunk(c, k); };
+      parallel::run_tasks(chunk_offsets_[c + 1] - chunk_offsets_[c], threads, colour_chunk);
     }
   }
   for (const SweepTotals& chunk : chunk_totals_) {

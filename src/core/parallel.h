@@ -1,5 +1,6 @@
 #pragma once
-// Deterministic parallel loops over flat arrays (OpenMP), for the cloth solvers' hot loops.
+// Deterministic parallel loops over flat arrays (on thread_pool.h), for the cloth solvers' hot
+// loops.
 //
 // Three rules keep the results independent of the thread count (and so the same bits run after
 // run): a parallel loop writes each output element from exactly one iteration; scatters such
@@ -9,15 +10,18 @@
 // then added in chunk order. A sum of at most kChunk terms is therefore the plain sequential
 // sum.
 //
-// Loops below kMinParallelWork iterations run on the calling thread, without entering OpenMP
-// at all: even a one-thread parallel region costs about a microsecond, and a step of the lab's
-// 11 x 11 cloth runs some forty of these loops in about 50 microseconds.
+// Loops below kMinParallelWork iterations run on the calling thread, without the pool at all:
+// handing out even one task costs about a microsecond, and a step of the lab's 11 x 11 cloth
+// runs some forty of these loops in about 50 microseconds. Larger loops are cut into tasks the
+// calling thread and the pool's workers claim one at a time (thread_pool.h), so a worker that
+// another process holds off its core never holds up the loop.
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
 
 #include "animkit/core/threads.h"
+#include "thread_pool.h"
 
 namespace animkit::parallel {
 
@@ -33,7 +37,7 @@ inline int chunk_count(int count) {
   return (count + kChunk - 1) / kChunk;
 }
 
-/// f(i) for i in [0, count), statically split over the threads.
+/// f(i) for i in [0, count), in tasks of kChunk indices.
 template <class F>
 void for_each(int count, F&& f) {
   const int threads = threads_for(count);
@@ -41,13 +45,16 @@ void for_each(int count, F&& f) {
     for (int i = 0; i < count; ++i) f(i);
     return;
   }
-#pragma omp parallel for schedule(static) num_threads(threads)
-  for (int i = 0; i < count; ++i) f(i);
+  auto task = [&](int c) {
+    const int end = std::min(count, (c + 1) * kChunk);
+    for (int i = c * kChunk; i < end; ++i) f(i);
+  };
+  run_tasks(chunk_count(count), threads, task);
 }
 
 /// for_each for loops whose iterations each cost about `weight` (>= 1) light iterations (a
 /// contact pair's barrier and its 12 x 12 eigendecomposition): parallel from kMinParallelWork /
-/// weight iterations on.
+/// weight iterations on, in tasks of about kChunk light iterations.
 template <class F>
 void for_each_weighted(int count, int weight, F&& f) {
   const long work = static_cast<long>(count) * weight;
@@ -56,12 +63,16 @@ void for_each_weighted(int count, int weight, F&& f) {
     for (int i = 0; i < count; ++i) f(i);
     return;
   }
-#pragma omp parallel for schedule(dynamic, 64) num_threads(threads)
-  for (int i = 0; i < count; ++i) f(i);
+  const int size = std::max(1, kChunk / weight);
+  auto task = [&](int c) {
+    const int end = std::min(count, (c + 1) * size);
+    for (int i = c * size; i < end; ++i) f(i);
+  };
+  run_tasks((count + size - 1) / size, threads, task);
 }
 
 /// f(e) for every element of `schedule` (an ElementSchedule): its even segments, then its odd
-/// ones, each segment in order; the segments of one parity split over the threads when the
+/// ones, each segment in order; the segments of one parity run as separate tasks when the
 /// schedule allows it.
 template <class Schedule, class F>
 void scatter(const Schedule& schedule, F&& f) {
@@ -69,19 +80,16 @@ void scatter(const Schedule& schedule, F&& f) {
   const int* order = schedule.order.data();
   const int* start = schedule.segment_start.data();
   constexpr int segments = Schedule::kSegments;
-  if (threads == 1) {
-    for (int phase = 0; phase < 2; ++phase) {
-      for (int s = phase; s < segments; s += 2) {
-        for (int k = start[s]; k < start[s + 1]; ++k) f(order[k]);
-      }
-    }
-    return;
-  }
-#pragma omp parallel num_threads(threads)
   for (int phase = 0; phase < 2; ++phase) {
-#pragma omp for schedule(static)
-    for (int s = phase; s < segments; s += 2) {
+    auto segment = [&](int t) {
+      const int s = phase + 2 * t;
       for (int k = start[s]; k < start[s + 1]; ++k) f(order[k]);
+    };
+    const int count = (segments - phase + 1) / 2;
+    if (threads == 1) {
+      for (int t = 0; t < count; ++t) segment(t);
+    } else {
+      run_tasks(count, threads, segment);
     }
   }
 }
@@ -102,8 +110,7 @@ std::array<double, N> sum(int count, std::vector<std::array<double, N>>& partial
   if (threads == 1) {
     for (int c = 0; c < chunks; ++c) chunk_sum(c);
   } else {
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (int c = 0; c < chunks; ++c) chunk_sum(c);
+    run_tasks(chunks, threads, chunk_sum);
   }
   std::array<double, N> total{};
   for (int c = 0; c < chunks; ++c) {

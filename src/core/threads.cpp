@@ -1,16 +1,32 @@
 #include "animkit/core/threads.h"
 
-#include <omp.h>
-
 #include <atomic>
 #include <cassert>
+#include <cstdlib>
+#include <thread>
 
 namespace animkit {
 
 namespace {
-// 0: OpenMP's own default (OMP_NUM_THREADS, else the cores). A process-wide setting rather
-// than omp_set_num_threads(), which only changes the calling thread's own default.
+// 0: the default. A process-wide setting: set_thread_count() from any thread applies to
+// every following loop.
 std::atomic<int> requested_threads{0};
+
+// OMP_NUM_THREADS when it starts with a positive count (the variable OpenMP programs, and this
+// library's earlier OpenMP loops, take: "2", or a list such as "2,1" whose first entry is the
+// outermost level's), else one thread per core. Read once, like OpenMP's runtime does.
+int default_thread_count() {
+  static const int count = [] {
+    if (const char* text = std::getenv("OMP_NUM_THREADS")) {
+      char* end = nullptr;
+      const long n = std::strtol(text, &end, 10);
+      if (end != text && n > 0 && n <= 1024) return static_cast<int>(n);
+    }
+    const unsigned cores = std::thread::hardware_concurrency();
+    return cores > 0 ? static_cast<int>(cores) : 1;
+  }();
+  return count;
+}
 }  // namespace
 
 void set_thread_count(int count) {
@@ -20,7 +36,7 @@ void set_thread_count(int count) {
 
 int thread_count() {
   const int requested = requested_threads.load(std::memory_order_relaxed);
-  return requested > 0 ? requested : omp_get_max_threads();
+  return requested > 0 ? requested : default_thread_count();
 }
 
 }  // namespace animkit

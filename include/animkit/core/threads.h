@@ -1,6 +1,6 @@
 #pragma once
-// How many threads animkit's parallel loops use (OpenMP, libgomp). The cloth solvers split
-// their per-particle and per-spring loops over these threads; models too small to gain from
+// How many threads animkit's parallel loops use (src/core/thread_pool.h). The cloth solvers
+// split their per-particle and per-spring loops over these threads; models too small to gain from
 // it (the lab's 11 x 11 cloth) stay on the calling thread whatever the count.
 //
 // Results do not depend on the count: every parallel loop writes each output from one
