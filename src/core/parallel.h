@@ -11,8 +11,8 @@
 // sum.
 //
 // Loops below kMinParallelWork iterations run on the calling thread, without the pool at all:
-// handing out even one task costs about a microsecond, and a step of the lab's 11 x 11 cloth
-// runs some forty of these loops in about 50 microseconds. Larger loops are cut into tasks the
+// a hand-off to other threads costs more than such a loop (a step of the lab's 11 x 11 cloth
+// runs some forty of them in about 50 microseconds). Larger loops are cut into tasks the
 // calling thread and the pool's workers claim one at a time (thread_pool.h), so a worker that
 // another process holds off its core never holds up the loop.
 #include <algorithm>
