@@ -28,11 +28,12 @@ set(ANIMKIT_SLOW_TEST_FILTER "*Slow.*")
 # ones instead of alone at the end (ctest's own timings replace this after the first run).
 set(ANIMKIT_SLOW_TEST_COST 1000)
 
-# One thread a test (OMP_NUM_THREADS, threads.h): ctest -j already gives every core a test, and a second thread per
-# test only waits for a core (MultigridPcg.CouplingsInTheHierarchySaveIterations, two copies at
-# once under the sanitizers: 62 s each with two threads, 42 s with one). The results are the
-# same bits for any thread count (tests/cloth/parallel_determinism_test.cpp, which sets its own
-# counts and so still runs the loops on two threads).
+# One thread a test (OMP_NUM_THREADS, include/animkit/core/threads.h): ctest -j already gives
+# every core a test, and a second thread per test only waits for a core
+# (MultigridPcg.CouplingsInTheHierarchySaveIterations, two copies at once under the sanitizers,
+# with OpenMP: 62 s each with two threads, 42 s with one). The results are the same bits for
+# any thread count (tests/cloth/parallel_determinism_test.cpp, which sets its own counts and so
+# still runs the loops on two threads).
 set(ANIMKIT_TEST_THREADS ENVIRONMENT_MODIFICATION OMP_NUM_THREADS=set:1)
 
 # Registers the GoogleTest tests of `target` under `label`, its *Slow suites under `slow`, each

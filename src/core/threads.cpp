@@ -12,9 +12,8 @@ namespace {
 // every following loop.
 std::atomic<int> requested_threads{0};
 
-// OMP_NUM_THREADS when it starts with a positive count (the variable OpenMP programs, and this
-// library's earlier OpenMP loops, take: "2", or a list such as "2,1" whose first entry is the
-// outermost level's), else one thread per core. Read once, like OpenMP's runtime does.
+// OMP_NUM_THREADS when it starts with a positive count (as OpenMP programs read it: "2", or a
+// list such as "2,1" whose first entry counts), else one thread per core. Read once.
 int default_thread_count() {
   static const int count = [] {
     if (const char* text = std::getenv("OMP_NUM_THREADS")) {

@@ -101,9 +101,8 @@ TEST(ThreadPool, AForkedChildRunsItsLoopsWhole) {
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
 }
 
-// The calling thread never waits for a worker to start: a loop completes even when its tasks
-// need far longer than a worker's spin, and a sum over chunks comes out the same bits for one
-// and for several threads (the chunks are added in order whoever ran them).
+// A sum over chunks comes out the same bits for one and for several threads: the chunks are
+// added in order, whichever thread ran each.
 TEST(ThreadPool, ChunkedSumIsTheSameForAnyThreadCount) {
   const int count = 100'003;
   std::vector<std::array<double, 1>> partials(static_cast<std::size_t>(chunk_count(count)));
