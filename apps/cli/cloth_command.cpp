@@ -103,7 +103,7 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
   if (args.integrator == "auto" && (args.scene.empty() || args.given("--integrator"))) {
     const double tolerance =
         tolerance_of(world_desc->simulation.integrator).value_or(args.tolerance);
-    auto choice = choose_integrator(*cloth, dt, tolerance);
+    auto choice = choose_integrator(*world_desc, tolerance);
     if (!choice) return report_error(choice.error().message);
     print_integrator_trial(*choice);
     world_desc->simulation.integrator = choice->settings;
@@ -221,6 +221,10 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
   if (!divergence) {
     if (auto ok = pictures->finish_video(); !ok) return report_error(ok.error().message);
   }
+  // A diverged run's unfinished caches are dropped now: their writers remove their temporaries
+  // before the folder is swapped in.
+  cache.reset();
+  collider_cache.reset();
   if (auto ok = commit(); !ok) return report_error(ok.error().message);
   if (divergence) return report_error(*divergence);
 

@@ -80,7 +80,8 @@ int run(FootlockArgs args) {
   }
   // The fixed clip goes back in the file's own units.
   motion_to_bvh(locked, *clip);
-  scale_bvh_clip(*clip, 1.0 / args.scale);
+  if (auto ok = scale_bvh_clip(*clip, 1.0 / args.scale); !ok)
+    return report_error(ok.error().message);
   if (auto ok = write_bvh_file(output->dir() / "fixed.bvh", *clip); !ok) {
     return report_error(ok.error().message);
   }

@@ -63,7 +63,10 @@ int run(CLI::App& app, int argc, char** argv) {
     if (app.got_subcommand("reach")) return run_reach();
     if (app.got_subcommand("scenes")) return run_scenes();
     return run_demo();
-  } catch (const std::exception& e) {  // e.g. out of memory: still one line, never a crash
+  } catch (const std::bad_alloc&) {  // one line that says what ran out, never a crash
+    return animkit::cli::report_error(
+        "out of memory: the run needed more than this machine (or its memory limit) could give");
+  } catch (const std::exception& e) {  // still one line, never a crash
     return animkit::cli::report_error(e.what());
   }
 }

@@ -72,6 +72,7 @@ Result<MeshClothOptions> mesh_cloth_options(const MeshClothArgs& args,
   auto mesh = read_obj_mesh(args.mesh);
   if (!mesh) return fail(mesh.error().message);
   o.mesh = std::move(*mesh);
+  o.source = args.mesh;
   o.material = material;
   o.mass = mass;
   o.stiffness = stiffness;

@@ -69,6 +69,7 @@ int run(ReachArgs args) {
 
   auto clip = read_bvh_file(args.in, {.scale = args.scale});
   if (!clip) return report_error(clip.error().message);
+  if (clip->frame_count() == 0) return report_error(args.in + ": the clip has no frames");
   if (args.frame < 0 || args.frame >= clip->frame_count()) {
     return report_error("--frame must be in [0, " + std::to_string(clip->frame_count() - 1) +
                         "] (" + args.in + " has " + std::to_string(clip->frame_count()) +
@@ -121,7 +122,8 @@ int run(ReachArgs args) {
   BvhClip reached = *clip;
   bvh_pose_to_frame(pose, reached, args.frame);
   reached.motion = Eigen::MatrixXd(reached.motion.row(args.frame));
-  scale_bvh_clip(reached, 1.0 / args.scale);
+  if (auto ok = scale_bvh_clip(reached, 1.0 / args.scale); !ok)
+    return report_error(ok.error().message);
   if (auto ok = write_bvh_file(output->dir() / "reached.bvh", reached); !ok) {
     return report_error(ok.error().message);
   }

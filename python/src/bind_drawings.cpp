@@ -16,6 +16,7 @@
 #include "animkit/io/drawing_source.h"
 #include "animkit/io/image_input.h"
 #include "animkit/io/text_strokes.h"
+#include "animkit/kinematics/ik_types.h"
 #include "animkit/trajectory/builtin_curves.h"
 #include "animkit/trajectory/image_strokes.h"
 #include "animkit/trajectory/lab_shapes.h"
@@ -60,6 +61,12 @@ Stroke to_stroke(const py::handle& value, const std::string& what) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!std::isfinite(points[i].x()) || !std::isfinite(points[i].y())) {
       raise(what + " point " + std::to_string(i) + " has a non-finite coordinate");
+    }
+    // The bound of IK targets: lengths and spacings of such points stay finite (a point at
+    // 1e300 made stroke_length return inf).
+    if (points[i].cwiseAbs().maxCoeff() > kMaxTargetCoordinate) {
+      raise(what + " point " + std::to_string(i) + " has a coordinate beyond " +
+            format_number(kMaxTargetCoordinate));
     }
   }
   return Stroke(points.begin(), points.end());

@@ -111,11 +111,8 @@ void bind_skel_bvh(py::module_& m) {
       .def(
           "scaled",
           [](const BvhClip& c, double factor) {
-            if (!(std::isfinite(factor) && factor > 0.0)) {
-              raise("scale factor must be a number > 0, got " + format_number(factor));
-            }
             BvhClip out = c;
-            scale_bvh_clip(out, factor);
+            if (auto ok = scale_bvh_clip(out, factor); !ok) raise(ok.error().message);
             return out;
           },
           py::arg("factor"),

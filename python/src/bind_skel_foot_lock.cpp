@@ -81,7 +81,7 @@ BipedLegs legs_of(const Skeleton& skeleton, const py::object& legs) {
     }
     for (int k = 1; k < 3; ++k) {
       if (skeleton.parents()[joints[k]] != joints[k - 1]) {
-        raise("foot lock needs " + skeleton.names()[joints[k - 1]] + " to be the parent of " +
+        raise("a biped's leg needs " + skeleton.names()[joints[k - 1]] + " to be the parent of " +
               skeleton.names()[joints[k]]);
       }
     }

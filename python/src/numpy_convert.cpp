@@ -43,6 +43,12 @@ DoubleArray fixed_vector(const py::handle& value, std::string_view what, py::ssi
 
 DoubleArray as_double_array(const py::handle& value, std::string_view what) {
   if (value.is_none()) raise(std::string(what) + " must be an array of numbers, got None");
+  // The cast to float64 would drop complex numbers' imaginary parts with only a warning.
+  if (const py::array any = py::array::ensure(value); !any) {
+    PyErr_Clear();  // not an array at all: the cast below says so
+  } else if (any.dtype().kind() == 'c') {
+    raise(std::string(what) + " must be real numbers, got complex ones");
+  }
   DoubleArray array = DoubleArray::ensure(value);
   if (!array) {
     PyErr_Clear();  // ensure() leaves numpy's conversion error set

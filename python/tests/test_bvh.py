@@ -63,8 +63,11 @@ def test_scale_multiplies_offsets_and_positions():
     np.testing.assert_allclose(clip.values[1, :3], [0.5, 0.5, 0])
     back = clip.scaled(2.0)
     np.testing.assert_allclose(back.values, animkit.parse_bvh(SMALL).values)
-    with pytest.raises(animkit.Error, match="scale factor must be a number > 0"):
+    with pytest.raises(animkit.Error, match="scale factor must be a finite number > 0"):
         clip.scaled(0.0)
+    # A factor that would make positions infinite is refused, not returned as inf.
+    with pytest.raises(animkit.Error, match="scaling by 1e\\+308 puts a value"):
+        clip.scaled(1e308)
     with pytest.raises(animkit.Error, match="scale"):
         animkit.parse_bvh(SMALL, scale=-1.0)
 

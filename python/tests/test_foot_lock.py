@@ -132,7 +132,7 @@ def test_bad_input(walk):
         animkit.lock_feet(s, motion, animkit.FootLockSettings(min_contact_frames=0))
     with pytest.raises(animkit.Error, match="height threshold"):
         animkit.lock_feet(s, motion, animkit.FootLockSettings(height_threshold=math.nan))
-    with pytest.raises(animkit.Error, match="foot lock needs LeftKnee to be the parent of "
+    with pytest.raises(animkit.Error, match="a biped's leg needs LeftKnee to be the parent of "
                                             "RightAnkle"):
         animkit.lock_feet(s, motion, legs=(("LeftHip", "LeftKnee", "RightAnkle"),
                                            ("RightHip", "RightKnee", "RightAnkle")))
@@ -148,7 +148,7 @@ def test_bad_input(walk):
     with pytest.raises(animkit.Error, match="foot lock needs at least 2 frames, got 1"):
         animkit.lock_feet(s, one_frame)
     arm = animkit.Skeleton(["a", "b"], [-1, 0], [[0, 0, 0], [1, 0, 0]])
-    with pytest.raises(animkit.Error, match="foot lock needs a joint named LeftHip"):
+    with pytest.raises(animkit.Error, match="no joint named LeftHip: a biped's legs are found by name"):
         animkit.lock_feet(arm, motion)
     tiny = animkit.Motion(np.tile([1.0, 0, 0, 0], (2, 1, 1)), np.zeros((2, 1, 3)))
     with pytest.raises(animkit.Error, match="foot lock motion has 1 joints but the skeleton 38"):

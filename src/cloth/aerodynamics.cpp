@@ -37,6 +37,10 @@ Vec3 WindSettings::at(const Vec3& x, double t) const {
 std::optional<Error> AirSettings::validate() const {
   if (!is_finite(wind.velocity)) return Error{"wind velocity has a non-finite coordinate"};
   if (!is_finite(wind.gust)) return Error{"wind gust has a non-finite coordinate"};
+  if (!kSpeedRange.contains(wind.velocity))
+    return Error{kSpeedRange.refusal("wind velocity (m/s)", wind.velocity)};
+  if (!kSpeedRange.contains(wind.gust))
+    return Error{kSpeedRange.refusal("wind gust (m/s)", wind.gust)};
   if (!std::isfinite(wind.gust_frequency) || wind.gust_frequency <= 0.0)
     return Error{"wind gust frequency must be > 0 Hz, got " + format_number(wind.gust_frequency)};
   if (auto e = non_negative("density", density)) return e;

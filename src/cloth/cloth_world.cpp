@@ -24,8 +24,8 @@ std::optional<Error> ClothWorldDesc::validate() const {
   if (ground) {
     if (!kCoordinateRange.contains(ground->height))
       return Error{kCoordinateRange.refusal("the ground's height", ground->height)};
-    if (!std::isfinite(ground->friction) || ground->friction < 0.0)
-      return Error{"the ground's friction must be >= 0, got " + format_number(ground->friction)};
+    if (!kFrictionRange.contains(ground->friction))
+      return Error{kFrictionRange.refusal("the ground's friction", ground->friction)};
   }
   if (has_contact()) {
     if (auto error = contact.validate()) return error;
@@ -71,7 +71,8 @@ Result<ClothDesc> build_world_cloth(const ClothWorldDesc& desc) {
 namespace {
 
 // The contact term over the colliders' surfaces at time 0 and the ground; refuses a cloth
-// that starts inside a collider or on or below the ground (the barrier would be infinite).
+// that starts inside a collider, on or below the ground, touching or through a collider or
+// itself (ContactTerm::check_start).
 Result<std::shared_ptr<ContactTerm>> make_contact(const ClothWorldDesc& desc,
                                                   const ClothSimulator& sim,
                                                   const std::vector<Collider>& colliders) {
@@ -86,8 +87,11 @@ Result<std::shared_ptr<ContactTerm>> make_contact(const ClothWorldDesc& desc,
     }
   }
   obstacles.colliders = colliders;  // moved by the contact term along their motions
-  return ContactTerm::create(std::make_shared<const ClothModel>(sim.model()), desc.contact,
-                             std::move(obstacles));
+  auto term = ContactTerm::create(std::make_shared<const ClothModel>(sim.model()), desc.contact,
+                                  std::move(obstacles));
+  if (!term) return term;
+  if (auto ok = (*term)->check_start(x); !ok) return fail(ok.error().message);
+  return term;
 }
 
 }  // namespace

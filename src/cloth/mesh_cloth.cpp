@@ -106,9 +106,7 @@ void add_material_elements(const MeshClothOptions& o, const std::vector<MeshEdge
   }
 }
 
-}  // namespace
-
-Result<ClothDesc> make_mesh_cloth(const MeshClothOptions& o) {
+Result<ClothDesc> make_unnamed_mesh_cloth(const MeshClothOptions& o) {
   if (auto error = o.mesh.validate()) return fail(error->message);
   if (!is_finite(o.warp) || !(o.warp.norm() > 0.0))
     return fail("the warp direction must be finite and nonzero, got " + to_string(o.warp));
@@ -141,6 +139,14 @@ Result<ClothDesc> make_mesh_cloth(const MeshClothOptions& o) {
   if (auto error = add_pins(o, desc)) return fail(error->message);
   if (auto error = desc.validate()) return fail(error->message);
   return desc;
+}
+
+}  // namespace
+
+Result<ClothDesc> make_mesh_cloth(const MeshClothOptions& options) {
+  auto cloth = make_unnamed_mesh_cloth(options);
+  if (!cloth && !options.source.empty()) return fail(options.source + ": " + cloth.error().message);
+  return cloth;
 }
 
 }  // namespace animkit

@@ -44,6 +44,12 @@ std::optional<Error> check_shape(const CapsuleShape& s) {
   return check_size("half length", s.half_length);
 }
 std::optional<Error> check_shape(const MeshShape& s) {
+  // The range first: the mesh's own checks square its coordinates (triangle areas).
+  const ParameterRange range{-kMaxColliderSize, kMaxColliderSize};
+  for (std::size_t v = 0; v < s.mesh.vertices.size(); ++v) {
+    if (is_finite(s.mesh.vertices[v]) && !range.contains(s.mesh.vertices[v]))
+      return Error{range.refusal("mesh vertex " + std::to_string(v), s.mesh.vertices[v])};
+  }
   return s.mesh.validate();
 }
 
@@ -60,9 +66,8 @@ std::optional<Error> check_name(const std::string& name) {
 std::optional<Error> first_problem(const ColliderDesc& d) {
   if (auto e = std::visit([](const auto& s) { return check_shape(s); }, d.shape)) return e;
   if (auto e = validate_motion(d.motion)) return e;
-  if (!std::isfinite(d.friction) || d.friction < 0.0) {
-    return Error{"friction must be finite and >= 0, got " + format_number(d.friction)};
-  }
+  if (!kFrictionRange.contains(d.friction))
+    return Error{kFrictionRange.refusal("friction", d.friction)};
   if (d.tessellation < kMinTessellation || d.tessellation > kMaxTessellation) {
     return Error{"tessellation must be between " + std::to_string(kMinTessellation) + " and " +
                  std::to_string(kMaxTessellation) + ", got " + std::to_string(d.tessellation)};
@@ -82,11 +87,18 @@ std::optional<Error> ColliderDesc::validate() const {
 
 std::optional<Error> validate_colliders(const std::vector<ColliderDesc>& colliders) {
   std::set<std::string> names;
+  std::size_t triangles = 0;
   for (const ColliderDesc& d : colliders) {
     if (auto e = d.validate()) return e;
     if (!names.insert(d.name).second) {
       return Error{"two colliders are named " + quote_input(d.name)};
     }
+    triangles += surface_triangle_count(d.shape, d.tessellation);
+  }
+  if (triangles > kMaxColliderTriangles) {
+    return Error{"the colliders' surfaces would have " + std::to_string(triangles) +
+                 " triangles, more than the " + std::to_string(kMaxColliderTriangles) +
+                 " a scene may have (lower their tessellation or use fewer colliders)"};
   }
   return std::nullopt;
 }

@@ -19,8 +19,10 @@ std::optional<Error> check_rotation(const Quat& q, const std::string& what) {
   return std::nullopt;
 }
 
-std::optional<Error> check_vector(const Vec3& v, const std::string& what) {
+std::optional<Error> check_vector(const Vec3& v, const std::string& what,
+                                  const ParameterRange& range) {
   if (!is_finite(v)) return Error{what + " has a non-finite coordinate " + to_string(v)};
+  if (!range.contains(v)) return Error{range.refusal(what, v)};
   return std::nullopt;
 }
 
@@ -91,10 +93,10 @@ RigidPose pose_of(const KeyframedMotion& m, double t) {
 }
 
 std::optional<Error> validate(const ScriptedMotion& m) {
-  if (auto e = check_vector(m.initial.position, "initial position")) return e;
+  if (auto e = check_vector(m.initial.position, "initial position", kCoordinateRange)) return e;
   if (auto e = check_rotation(m.initial.rotation, "initial rotation")) return e;
-  if (auto e = check_vector(m.linear_velocity, "linear velocity")) return e;
-  return check_vector(m.angular_velocity, "angular velocity");
+  if (auto e = check_vector(m.linear_velocity, "linear velocity", kSpeedRange)) return e;
+  return check_vector(m.angular_velocity, "angular velocity", kAngularSpeedRange);
 }
 
 std::optional<Error> validate(const KeyframedMotion& m) {
@@ -103,7 +105,8 @@ std::optional<Error> validate(const KeyframedMotion& m) {
     const Keyframe& k = m.keyframes[i];
     const std::string name = "keyframe " + std::to_string(i);
     if (!std::isfinite(k.time)) return Error{name + " has a non-finite time"};
-    if (auto e = check_vector(k.position, name + " position")) return e;
+    if (!kTimeRange.contains(k.time)) return Error{kTimeRange.refusal(name + " time (s)", k.time)};
+    if (auto e = check_vector(k.position, name + " position", kCoordinateRange)) return e;
     if (auto e = check_rotation(k.rotation, name + " rotation")) return e;
     if (i > 0 && !(k.time > m.keyframes[i - 1].time)) {
       return Error{name + " is at " + format_number(k.time) + " s, not after keyframe " +
@@ -120,7 +123,7 @@ std::optional<Error> validate_motion(const ColliderMotion& motion) {
 }
 
 std::optional<Error> validate_pose(const RigidPose& pose) {
-  if (auto e = check_vector(pose.position, "position")) return e;
+  if (auto e = check_vector(pose.position, "position", kCoordinateRange)) return e;
   return check_rotation(pose.rotation, "rotation");
 }
 

@@ -100,16 +100,20 @@ TriangleMesh box_surface(const Vec3& half, int levels) {
 
 // Rings of vertices from the top pole to the bottom one: the top hemisphere's rings, the
 // cylinder's inner rings, the bottom hemisphere's rings; neighbouring rings joined by quads.
+// Cylinder rings about a segment apart (so its triangles are not needles), at most 64 * 2^L
+// of them for a long thin capsule.
+int capsule_cylinder_rings(double radius, double half_length, int levels) {
+  const int around = 8 << levels;
+  const double segment = radius * 2.0 * std::numbers::pi / around;
+  const double max_rings = 64 << levels;
+  return static_cast<int>(std::clamp(std::ceil(2.0 * half_length / segment), 1.0, max_rings));
+}
+
 TriangleMesh capsule_surface(double radius, double half_length, int levels) {
   const int around = 8 << levels;
   const int per_cap = 2 << levels;
   const double step = std::numbers::pi / 2.0 / per_cap;  // = 2 pi / around
-  const double segment = radius * 2.0 * std::numbers::pi / around;
-  // Cylinder rings about a segment apart (so its triangles are not needles), at most 64 * 2^L
-  // of them for a long thin capsule.
-  const double max_rings = 64 << levels;
-  const int cylinder =
-      static_cast<int>(std::clamp(std::ceil(2.0 * half_length / segment), 1.0, max_rings));
+  const int cylinder = capsule_cylinder_rings(radius, half_length, levels);
   // Each ring as (height, distance from the axis).
   std::vector<std::pair<double, double>> rings;
   for (int k = 1; k < per_cap; ++k) {
@@ -166,6 +170,28 @@ TriangleMesh collider_surface(const ColliderShape& shape, int tessellation) {
     TriangleMesh operator()(const MeshShape& s) const { return s.mesh; }
   };
   return std::visit(Build{level}, shape);
+}
+
+std::size_t surface_triangle_count(const ColliderShape& shape, int tessellation) {
+  const int level = std::clamp(tessellation, kMinTessellation, kMaxTessellation);
+  const std::size_t quadruple = std::size_t{1} << (2 * level);  // 4^level
+  struct Count {
+    int level;
+    std::size_t quadruple;
+    std::size_t operator()(const PlaneShape&) const { return 2; }
+    std::size_t operator()(const SphereShape&) const { return 20 * quadruple; }
+    std::size_t operator()(const BoxShape&) const { return 12 * quadruple; }
+    std::size_t operator()(const CapsuleShape& s) const {
+      // Rings: 2 (2^(L+1) - 1) on the caps and the cylinder's rings + 1; quads between
+      // consecutive rings and a fan at each pole, around = 8 * 2^L each.
+      const std::size_t around = std::size_t{8} << level;
+      const std::size_t rings = 2 * ((std::size_t{2} << level) - 1) +
+                                capsule_cylinder_rings(s.radius, s.half_length, level) + 1;
+      return around * (2 * (rings - 1) + 2);
+    }
+    std::size_t operator()(const MeshShape& s) const { return s.mesh.triangles.size(); }
+  };
+  return std::visit(Count{level, quadruple}, shape);
 }
 
 std::vector<std::array<int, 2>> surface_edges(const TriangleMesh& mesh) {

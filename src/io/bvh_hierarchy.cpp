@@ -158,6 +158,10 @@ class HierarchyReader {
                               (parsed == Number::malformed ? " is not a number"
                                                            : " is not a finite number"));
       }
+      if (!kBvhValueRange.contains(value * scale_)) {
+        return at(t.line, "OFFSET of " + label + ": " + quote_input(t.text) + " is beyond " +
+                              format_number(kBvhValueRange.max) + " (times the scale)");
+      }
       clip_.skeleton.rest_offsets[joint][axis] = value * scale_;
     }
     if (pos < tokens_.size() && tokens_[pos].line == offset_line) {

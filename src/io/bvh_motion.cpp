@@ -1,6 +1,9 @@
 #include "animkit/io/bvh_motion.h"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
+#include <vector>
 
 namespace animkit {
 
@@ -24,18 +27,32 @@ void motion_to_bvh(const SkeletalMotion& motion, BvhClip& clip) {
   }
 }
 
-void scale_bvh_clip(BvhClip& clip, double factor) {
-  assert(factor > 0.0);
-  for (Vec3& offset : clip.skeleton.rest_offsets) offset *= factor;
-  int column = 0;
+Result<void> scale_bvh_clip(BvhClip& clip, double factor) {
+  if (!(std::isfinite(factor) && factor > 0.0))
+    return fail("the scale factor must be a finite number > 0, got " + format_number(factor));
+  std::vector<Eigen::Index> position_columns;
+  Eigen::Index column = 0;
   for (const auto& channels : clip.channels) {
     for (BvhChannel c : channels) {
-      const bool position =
-          c == BvhChannel::x_position || c == BvhChannel::y_position || c == BvhChannel::z_position;
-      if (position) clip.motion.col(column) *= factor;
+      if (c == BvhChannel::x_position || c == BvhChannel::y_position || c == BvhChannel::z_position)
+        position_columns.push_back(column);
       ++column;
     }
   }
+  // The largest magnitude first, so a refused factor changes nothing.
+  double largest = 0.0;
+  for (const Vec3& offset : clip.skeleton.rest_offsets)
+    largest = std::max(largest, offset.cwiseAbs().maxCoeff());
+  for (Eigen::Index c : position_columns)
+    if (clip.motion.rows() > 0)
+      largest = std::max(largest, clip.motion.col(c).cwiseAbs().maxCoeff());
+  if (largest > kBvhValueRange.max / factor) {  // divided: the product may overflow
+    return fail("scaling by " + format_number(factor) + " puts a value of " +
+                format_number(largest) + " beyond " + format_number(kBvhValueRange.max));
+  }
+  for (Vec3& offset : clip.skeleton.rest_offsets) offset *= factor;
+  for (Eigen::Index c : position_columns) clip.motion.col(c) *= factor;
+  return {};
 }
 
 }  // namespace animkit

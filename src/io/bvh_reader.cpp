@@ -127,7 +127,14 @@ class BvhReader {
                                      (parsed == Number::malformed ? " is not a number"
                                                                   : " is not a finite number"));
         }
-        values.push_back(is_position[count] ? value * scale_ : value);
+        const double scaled = is_position[count] ? value * scale_ : value;
+        if (!kBvhValueRange.contains(scaled)) {
+          return at(line.number, "frame " + std::to_string(f) + " value " + std::to_string(count) +
+                                     " (" + channel_label(count) + ") " + quote_input(t) +
+                                     " is beyond " + format_number(kBvhValueRange.max) +
+                                     (is_position[count] ? " (times the scale)" : ""));
+        }
+        values.push_back(scaled);
       }
       if (count != channels) {
         return at(line.number, "frame " + std::to_string(f) + " has " + std::to_string(count) +

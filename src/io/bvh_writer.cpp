@@ -1,5 +1,6 @@
 // The BVH writer: the hierarchy depth first (the only order a BVH file can express), then the
 // motion with its columns in that same order.
+#include <algorithm>
 #include <cassert>
 #include <charconv>
 #include <string>
@@ -43,6 +44,10 @@ std::vector<int> depth_first_order(const SkeletonDesc& skeleton) {
   return order;
 }
 
+// One tab per level up to this depth: indentation is for people, and a long chain indented in
+// full grows as the square of its depth (a 100,000-deep chain: gigabytes).
+constexpr std::size_t kMaxIndent = 32;
+
 }  // namespace
 
 std::string write_bvh(const BvhClip& clip) {
@@ -51,16 +56,17 @@ std::string write_bvh(const BvhClip& clip) {
   const std::vector<int> order = depth_first_order(skeleton);
   std::string out = "HIERARCHY\n";
   std::vector<int> open;  // joints whose '}' is still to come
+  const auto indent_of = [&open] { return std::min(open.size(), kMaxIndent); };
   auto close_until = [&](int parent) {
     while (!open.empty() && open.back() != parent) {
       open.pop_back();
-      out.append(open.size(), '\t');
+      out.append(indent_of(), '\t');
       out += "}\n";
     }
   };
   for (const int j : order) {
     close_until(skeleton.parents[j]);
-    const std::string indent(open.size(), '\t');
+    const std::string indent(indent_of(), '\t');
     if (clip.end_sites[j]) {
       out += indent + "End Site\n";
     } else {

@@ -83,6 +83,7 @@ class SceneReader {
     if (fields.has("mesh")) {
       MeshClothOptions mesh;
       mesh.mesh = read_mesh(fields, "mesh");
+      mesh.source = "cloth.mesh " + (folder_ / *fields.string("mesh")).string();
       mesh.material = material;
       mesh.gravity = gravity;
       read_lab_parameters(fields, mesh.mass, mesh.stiffness, mesh.damping, material.has_value());

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "animkit/core/quote.h"
 
@@ -130,11 +133,38 @@ std::string element_path(const std::string& array_path, std::size_t index) {
   return array_path + "[" + std::to_string(index) + "]";
 }
 
+namespace {
+
+// A key met twice in one object: RFC 8259 leaves the meaning open and nlohmann keeps the last,
+// so {"frames": 3, "frames": 1000000} would quietly run a million frames.
+struct DuplicateKey {
+  std::string key;
+};
+
+}  // namespace
+
 Result<nlohmann::json> parse_json_document(std::string_view text, const std::string& prefix) {
+  std::vector<std::set<std::string>> open_objects;  // the keys seen in each enclosing object
+  const nlohmann::json::parser_callback_t refuse_duplicates =
+      [&open_objects](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        using Event = nlohmann::json::parse_event_t;
+        if (event == Event::object_start) {
+          open_objects.emplace_back();
+        } else if (event == Event::object_end) {
+          open_objects.pop_back();
+        } else if (event == Event::key && !open_objects.empty()) {
+          std::string key = parsed.get<std::string>();
+          if (!open_objects.back().insert(key).second) throw DuplicateKey{std::move(key)};
+        }
+        return true;
+      };
   try {
-    return nlohmann::json::parse(text);
+    return nlohmann::json::parse(text, refuse_duplicates);
   } catch (const nlohmann::json::exception& e) {  // syntax, or a number beyond a double
     return fail(prefix + "not valid JSON (" + sanitize_message(e.what(), 300) + ")");
+  } catch (const DuplicateKey& duplicate) {
+    return fail(prefix + "the key " + quote_input(duplicate.key) +
+                " appears twice in one object (which one was meant?)");
   }
 }
 

@@ -24,11 +24,15 @@ Result<LegJoints> find_leg(const Skeleton& skeleton, const std::string& side) {
   int* joints[3] = {&leg.hip, &leg.knee, &leg.ankle};
   for (int i = 0; i < 3; ++i) {
     *joints[i] = skeleton.find_joint(names[i]);
-    if (*joints[i] < 0) return fail("foot lock needs a joint named " + names[i]);
+    if (*joints[i] < 0) {
+      return fail("no joint named " + names[i] +
+                  ": a biped's legs are found by name (LeftHip, LeftKnee, LeftAnkle and the "
+                  "same on the right)");
+    }
   }
   for (int i = 1; i < 3; ++i) {
     if (skeleton.parents()[*joints[i]] != *joints[i - 1]) {
-      return fail("foot lock needs " + names[i - 1] + " to be the parent of " + names[i]);
+      return fail("a biped's leg needs " + names[i - 1] + " to be the parent of " + names[i]);
     }
   }
   return leg;

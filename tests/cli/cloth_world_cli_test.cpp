@@ -56,7 +56,26 @@ INSTANTIATE_TEST_SUITE_P(
         BadWorld{"--sphere 0,0,0,-1", "collider 'sphere 1': radius must be > 0, got -1"},
         BadWorld{"--sphere 1,1.5,0,0.5", "particle 12 starts inside collider 'sphere 1'"},
         BadWorld{"--ground 2", "particle 0 starts on or below the ground"},
-        BadWorld{"--ground 0 --thickness 0", "contact thickness must be > 0 m, got 0"},
+        BadWorld{"--ground 0 --thickness 0",
+                 "contact thickness must be > 0 m and at most 1e+06 m, got 0"},
+        BadWorld{
+            "--ground 0 --thickness 10",
+            "contact thickness 10 m is more than the cloth's mean edge length, 0.559173 m: the "
+            "sheet's neighbouring triangles would repel each other"},
+        BadWorld{"--sphere 1e300,0,0,1",
+                 "collider 'sphere 1': initial position must have each coordinate between "
+                 "-1e+06 and 1e+06, got (1e+300, 0, 0)"},
+        BadWorld{"--ground 0 --friction 1e300",
+                 "the ground's friction must be between 0 and 10, got 1e+300"},
+        BadWorld{"--wind 1e300,0,0",
+                 "wind velocity (m/s) must have each coordinate between -1e+06 and 1e+06, got "
+                 "(1e+300, 0, 0)"},
+        BadWorld{"--thickness 0.01",
+                 "--thickness applies to contact: give --sphere or --ground too"},
+        BadWorld{"--friction 0.5", "--friction applies to contact: give --sphere or --ground too"},
+        BadWorld{"--gust 1,0,0",
+                 "--gust adds gusts to a wind: give --wind too (--wind 0,0,0 for gusts alone)"},
+        BadWorld{"--scene ''", "--scene needs a built-in scene's name or a .json file, got ''"},
         BadWorld{"--wind 1,x,0", "--wind expects X,Y,Z in m/s, got '1,x,0'"}));
 
 }  // namespace

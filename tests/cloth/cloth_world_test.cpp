@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
+#include "animkit/cloth/material.h"
+
 namespace animkit {
 namespace {
 
@@ -88,6 +92,107 @@ TEST(ClothWorld, RefusesAClothStartingInsideACollider) {
   const auto world = build_cloth_world(desc);
   ASSERT_FALSE(world);
   EXPECT_EQ(world.error().message, "particle 30 starts inside collider 'ball'");
+}
+
+// The pea of a hostile tester's scene: a 4 x 4 sheet at height 1 and a 3 cm ball whose centre
+// sits 0.1 mm above the sheet, in the middle of a triangle, far from its corners and edges.
+ClothWorldDesc pea_through_sheet() {
+  ClothWorldDesc desc;
+  GridClothOptions grid;
+  grid.cells = 4;
+  grid.size = 1.0;
+  grid.height = 1.0;
+  grid.material = find_material("cotton")->material;
+  desc.cloth = grid;
+  ColliderDesc pea;
+  pea.name = "pea";
+  pea.shape = SphereShape{0.03};
+  pea.motion = ScriptedMotion{.initial = {.position = Vec3(0.1, 1.0001, 0.17)}};
+  desc.colliders.push_back(pea);
+  return desc;
+}
+
+TEST(ClothWorld, RefusesAClothStartingThroughACollider) {
+  const auto world = build_cloth_world(pea_through_sheet());
+  ASSERT_FALSE(world);
+  const std::string& message = world.error().message;
+  EXPECT_EQ(message.rfind("collider 'pea' passes through the cloth's triangle of particles ", 0),
+            0u)
+      << message;
+  EXPECT_NE(message.find(" at the start"), std::string::npos) << message;
+  // Moved clear of the sheet, the same ball starts.
+  ClothWorldDesc clear = pea_through_sheet();
+  std::get<ScriptedMotion>(clear.colliders[0].motion).initial.position = Vec3(0.1, 1.1, 0.17);
+  EXPECT_TRUE(build_cloth_world(clear));
+}
+
+// Two 1 m squares of 2 x 2 cells as one mesh: one lying at height 1, one standing through its
+// middle (in the plane x = 0.4) from y = 0.7 to 1.5: no vertex of one lies on the other.
+MeshClothOptions crossing_squares() {
+  MeshClothOptions options;
+  TriangleMesh& mesh = options.mesh;
+  const auto add_square = [&mesh](const auto& point) {
+    const int first = static_cast<int>(mesh.vertices.size());
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 2; ++i) mesh.vertices.push_back(point(0.5 * i, 0.5 * j));
+    for (int j = 0; j < 2; ++j) {
+      for (int i = 0; i < 2; ++i) {
+        const int v = first + 3 * j + i;
+        mesh.triangles.push_back({v, v + 1, v + 4});
+        mesh.triangles.push_back({v, v + 4, v + 3});
+      }
+    }
+  };
+  add_square([](double u, double v) { return Vec3(u, 1.0, v + 0.03); });
+  add_square([](double u, double v) { return Vec3(0.4, 0.7 + 0.8 * u, v + 0.07); });
+  options.material = find_material("cotton")->material;
+  options.gravity = 9.81;
+  return options;
+}
+
+TEST(ClothWorld, RefusesAClothStartingThroughItself) {
+  ClothWorldDesc desc;
+  desc.cloth = crossing_squares();
+  desc.ground = GroundDesc{};  // contact, for the cloth's self-contact
+  const auto world = build_cloth_world(desc);
+  ASSERT_FALSE(world);
+  EXPECT_EQ(world.error().message.rfind("the cloth passes through itself at the start: its edge "
+                                        "between particles ",
+                                        0),
+            0u)
+      << world.error().message;
+  // Without self-contact a cloth may cross itself: nothing keeps its layers apart anyway.
+  desc.contact.self_contact = false;
+  EXPECT_TRUE(build_cloth_world(desc)) << build_cloth_world(desc).error().message;
+}
+
+TEST(ClothWorld, RefusesAClothStartingOnASurface) {
+  // The sheet lying on a box's top face: every particle over the face is at distance zero.
+  ClothWorldDesc desc = sheet_over_ball();
+  desc.colliders[0].shape = BoxShape{Vec3(2.0, 0.25, 2.0)};  // its top face at y = 0.5 exactly
+  std::get<ScriptedMotion>(desc.colliders[0].motion).initial.position = Vec3(0, 0.25, 0);
+  auto world = build_cloth_world(desc);
+  ASSERT_FALSE(world);
+  const std::string& message = world.error().message;
+  EXPECT_NE(message.find(" touches collider 'ball' at the start ("), std::string::npos) << message;
+  EXPECT_NE(message.find(" m apart; contact needs them at least 2e-09 m apart)"), std::string::npos)
+      << message;
+  // Two coincident sheets (self-contact): each vertex lies on the other sheet's triangles.
+  MeshClothOptions twice = crossing_squares();
+  TriangleMesh& mesh = twice.mesh;
+  mesh.triangles.resize(8);
+  mesh.vertices.resize(9);
+  for (int k = 0; k < 9; ++k) mesh.vertices.push_back(mesh.vertices[k]);
+  for (int t = 0; t < 8; ++t)
+    mesh.triangles.push_back(
+        {mesh.triangles[t][0] + 9, mesh.triangles[t][1] + 9, mesh.triangles[t][2] + 9});
+  ClothWorldDesc coincident;
+  coincident.cloth = twice;
+  coincident.ground = GroundDesc{};
+  world = build_cloth_world(coincident);
+  ASSERT_FALSE(world);
+  EXPECT_EQ(world.error().message.rfind("the cloth touches itself", 0), 0u)
+      << world.error().message;
 }
 
 TEST(ClothWorld, RefusesBadWorlds) {

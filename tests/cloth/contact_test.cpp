@@ -196,9 +196,11 @@ TEST(Contact, BadSettingsAreRefusedByName) {
   ASSERT_TRUE(sim);
   const auto model = std::make_shared<const ClothModel>(sim->model());
   EXPECT_EQ(ContactTerm::create(model, {.thickness = 0.0}, {}).error().message,
-            "contact thickness must be > 0 m, got 0");
+            "contact thickness must be > 0 m and at most 1e+06 m, got 0");
   EXPECT_EQ(ContactTerm::create(model, {.stiffness = -1.0}, {}).error().message,
-            "contact stiffness must be >= 0 (0: automatic), got -1");
+            "contact stiffness (J/m^4, 0: automatic) must be between 0 and 1e+20, got -1");
+  EXPECT_EQ(ContactTerm::create(model, {.stiffness = 1e300}, {}).error().message,
+            "contact stiffness (J/m^4, 0: automatic) must be between 0 and 1e+20, got 1e+300");
   EXPECT_EQ(ContactTerm::create(model, {.min_separation = 1.0}, {}).error().message,
             "contact minimum separation must be in (0, 1), got 1");
   EXPECT_EQ(ContactTerm::create(model, {}, {.meshes = {TriangleMesh{}}, .ground_height = {}})

@@ -337,11 +337,12 @@ TEST(Friction, BadSettingsAreRefusedByName) {
     auto term = FrictionTerm::create(*contact, settings);
     return term ? std::string("accepted") : term.error().message;
   };
-  EXPECT_EQ(refusal({.obstacles = {-1.0}}), "friction on obstacle 0 must be >= 0, got -1");
+  EXPECT_EQ(refusal({.obstacles = {-1.0}}),
+            "friction on obstacle 0 must be between 0 and 10, got -1");
   EXPECT_EQ(refusal({.obstacles = {0.3}, .ground = std::numeric_limits<double>::quiet_NaN()}),
-            "friction on the ground must be >= 0, got nan");
+            "friction on the ground must be between 0 and 10, got nan");
   EXPECT_EQ(refusal({.obstacles = {0.3}, .self = -0.5}),
-            "friction in self-contact must be >= 0, got -0.5");
+            "friction in self-contact must be between 0 and 10, got -0.5");
   EXPECT_EQ(refusal({.obstacles = {0.3}, .smoothing_velocity = 0.0}),
             "friction smoothing velocity must be > 0 m/s, got 0");
   EXPECT_EQ(refusal({.obstacles = {0.3}, .max_passes = 0}),

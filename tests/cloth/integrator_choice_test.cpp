@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "animkit/cloth/cloth_world.h"
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/integrator_registry.h"
 
@@ -35,6 +36,38 @@ TEST(IntegratorChoice, TriesEveryImplicitIntegratorAndPicksAConvergedFastestOne)
   // The settings are the winner's, at the asked tolerance.
   EXPECT_EQ(integrator_entry(choice->settings).name, choice->name);
   EXPECT_EQ(tolerance_of(choice->settings), 1e-6);
+}
+
+TEST(IntegratorChoice, AWorldWithContactTriesOnlyTheIntegratorsThatTakeIt) {
+  ClothWorldDesc world;
+  world.cloth = GridClothOptions{.cells = 4, .size = 1.0, .height = 0.5, .pins = GridPins::none};
+  world.ground = GroundDesc{};
+  const auto choice = choose_integrator(world, 1e-4);
+  ASSERT_TRUE(choice) << choice.error().message;
+  for (const IntegratorTrial& trial : choice->trials) {
+    EXPECT_TRUE(find_integrator(trial.name)->takes_energy_terms) << trial.name;
+    EXPECT_FALSE(trial.diverged) << trial.name;
+  }
+  EXPECT_FALSE(choice->trials.empty());
+  // The winner runs the world.
+  world.simulation.integrator = choice->settings;
+  EXPECT_TRUE(build_cloth_world(world));
+  // Without contact or air every implicit integrator competes again.
+  world.ground.reset();
+  const auto free = choose_integrator(world, 1e-4);
+  ASSERT_TRUE(free) << free.error().message;
+  EXPECT_GT(free->trials.size(), choice->trials.size());
+}
+
+// The registry's flag says what ClothSimulator::add_energy_term does.
+TEST(IntegratorChoice, TheRegistrySaysWhichIntegratorsTakeEnergyTerms) {
+  ClothWorldDesc world;
+  world.cloth = GridClothOptions{.cells = 4, .size = 1.0, .height = 0.5, .pins = GridPins::none};
+  world.ground = GroundDesc{};
+  for (const IntegratorEntry& entry : cloth_integrators()) {
+    world.simulation = SimulationOptions{entry.defaults, 0};
+    EXPECT_EQ(static_cast<bool>(build_cloth_world(world)), entry.takes_energy_terms) << entry.name;
+  }
 }
 
 TEST(IntegratorChoice, BadArgumentsNameTheProblem) {

@@ -58,6 +58,8 @@ TEST(MeshEdges, RefusesAnEdgeOfThreeTriangles) {
             "mesh edge between vertices 0 and 1 is shared by 3 triangles (0, 1, 2): a cloth "
             "needs a manifold mesh, at most two triangles per edge");
   EXPECT_EQ(error_of({.mesh = fin}), edges.error().message);
+  // The mesh's source, when known, starts the message.
+  EXPECT_EQ(error_of({.mesh = fin, .source = "fin.obj"}), "fin.obj: " + edges.error().message);
 }
 
 TEST(MeshCloth, TotalMassIsDensityTimesArea) {

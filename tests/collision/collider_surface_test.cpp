@@ -123,6 +123,22 @@ TEST(ColliderSurface, TriangleCountsFollowTheLevel) {
   EXPECT_EQ(collider_surface(SphereShape{1.0}, -3).triangles.size(), 20u);
 }
 
+TEST(ColliderSurface, TheTriangleCountIsKnownBeforeTheSurfaceIsMade) {
+  const TriangleMesh tetrahedron{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                                 {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
+  const ColliderShape shapes[] = {SphereShape{0.3},        BoxShape{Vec3(1, 0.1, 2)},
+                                  CapsuleShape{0.2, 0.5},  CapsuleShape{0.01, 10.0},
+                                  CapsuleShape{1.0, 0.01}, PlaneShape{},
+                                  MeshShape{tetrahedron}};
+  for (const ColliderShape& shape : shapes) {
+    for (int level = 0; level <= 4; ++level) {
+      EXPECT_EQ(surface_triangle_count(shape, level),
+                collider_surface(shape, level).triangles.size())
+          << shape.index() << " at level " << level;
+    }
+  }
+}
+
 TEST(ColliderSurface, ThePlaneIsASquareFacingUp) {
   const TriangleMesh square = collider_surface(PlaneShape{4.0}, 3);
   ASSERT_EQ(square.triangles.size(), 2u);

@@ -53,9 +53,21 @@ TEST(ColliderDesc, ValidateNamesTheFirstProblem) {
 
   d = ball();
   d.friction = -0.1;
-  EXPECT_EQ(problem(d), "collider 'ball': friction must be finite and >= 0, got -0.1");
+  EXPECT_EQ(problem(d), "collider 'ball': friction must be between 0 and 10, got -0.1");
   d.friction = kNaN;
-  EXPECT_EQ(problem(d), "collider 'ball': friction must be finite and >= 0, got nan");
+  EXPECT_EQ(problem(d), "collider 'ball': friction must be between 0 and 10, got nan");
+  d.friction = 1e300;
+  EXPECT_EQ(problem(d), "collider 'ball': friction must be between 0 and 10, got 1e+300");
+  d = ball();
+  d.shape = MeshShape{TriangleMesh{{{0, 0, 0}, {1, 0, 0}, {0, 1e300, 0}}, {{0, 1, 2}}}};
+  EXPECT_EQ(problem(d),
+            "collider 'ball': mesh vertex 2 must have each coordinate between -1e+06 and 1e+06, "
+            "got (0, 1e+300, 0)");
+  d = ball();
+  d.motion = ScriptedMotion{.linear_velocity = Vec3(1e300, 0, 0)};
+  EXPECT_EQ(problem(d),
+            "collider 'ball': linear velocity must have each coordinate between -1e+06 and 1e+06, "
+            "got (1e+300, 0, 0)");
   d = ball();
   d.tessellation = 7;
   EXPECT_EQ(problem(d), "collider 'ball': tessellation must be between 0 and 6, got 7");
@@ -75,12 +87,26 @@ TEST(ColliderDesc, NamesMustDiffer) {
   EXPECT_EQ(validate_colliders({ball(), floor, ball()})->message, "two colliders are named 'ball'");
 }
 
+// Many small spheres from a short scene file: refused before any surface is made.
+TEST(ColliderDesc, TheCollidersSurfacesAreBoundedTogether) {
+  std::vector<ColliderDesc> pebbles(1600, ball());
+  for (std::size_t i = 0; i < pebbles.size(); ++i) {
+    pebbles[i].name = "pebble " + std::to_string(i);
+    pebbles[i].tessellation = 4;  // 5120 triangles each
+  }
+  EXPECT_EQ(validate_colliders(pebbles)->message,
+            "the colliders' surfaces would have 8192000 triangles, more than the 2000000 a "
+            "scene may have (lower their tessellation or use fewer colliders)");
+  pebbles.resize(390);  // 1,996,800 triangles
+  EXPECT_FALSE(validate_colliders(pebbles));
+}
+
 TEST(Collider, CreateRefusesAnInvalidDescription) {
   ColliderDesc d = ball();
   d.friction = -1;
   const auto c = Collider::create(d);
   ASSERT_FALSE(c);
-  EXPECT_EQ(c.error().message, "collider 'ball': friction must be finite and >= 0, got -1");
+  EXPECT_EQ(c.error().message, "collider 'ball': friction must be between 0 and 10, got -1");
 }
 
 TEST(Collider, WorldVerticesFollowThePose) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <limits>
 
 #include "shared_constants.h"
 
@@ -38,11 +39,22 @@ TEST(BvhMotion, ScalingMultipliesOffsetsAndPositionChannelsOnly) {
   const auto metres = read_bvh_file(kWalk, {.scale = 0.5});
   ASSERT_TRUE(clip && metres);
   BvhClip scaled = *clip;
-  scale_bvh_clip(scaled, 0.5);
+  ASSERT_TRUE(scale_bvh_clip(scaled, 0.5));
   EXPECT_EQ(scaled.motion, metres->motion);  // positions halved, rotations (degrees) kept
   for (int j = 0; j < clip->joint_count(); ++j) {
     EXPECT_EQ(scaled.skeleton.rest_offsets[j], metres->skeleton.rest_offsets[j]) << j;
   }
+  // A factor that would put a value beyond the clip's range, or is not a number > 0, is
+  // refused and changes nothing.
+  for (const double factor : {1e308, 0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
+    BvhClip refused = *clip;
+    const auto ok = scale_bvh_clip(refused, factor);
+    ASSERT_FALSE(ok) << factor;
+    EXPECT_EQ(refused.motion, clip->motion);
+    EXPECT_EQ(refused.skeleton.rest_offsets, clip->skeleton.rest_offsets);
+  }
+  EXPECT_EQ(
+      scale_bvh_clip(scaled, 1e308).error().message.rfind("scaling by 1e+308 puts a value", 0), 0u);
 }
 
 }  // namespace

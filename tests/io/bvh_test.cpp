@@ -198,6 +198,13 @@ TEST(Bvh, MalformedFilesEachGetOneClearError) {
             "bad.bvh: line 11: frame 1 value 2 (Zposition of hip) 'nan' is not a finite number");
   EXPECT_EQ(error_of(small_file("", "Frames: 1\nFrame Time: 0.1\n0 0 0 -inf 0 0\n")),
             "bad.bvh: line 10: frame 0 value 3 (Zrotation of hip) '-inf' is not a finite number");
+  EXPECT_EQ(error_of(small_file("", "Frames: 1\nFrame Time: 0.1\n1e300 0 0 0 0 0\n")),
+            "bad.bvh: line 10: frame 0 value 0 (Xposition of hip) '1e300' is beyond 1e+09 "
+            "(times the scale)");
+  EXPECT_EQ(error_of(small_file("", "Frames: 1\nFrame Time: 0.1\n0 0 0 0 2e9 0\n")),
+            "bad.bvh: line 10: frame 0 value 4 (Xrotation of hip) '2e9' is beyond 1e+09");
+  EXPECT_EQ(error_of(small_file("\tJOINT knee\n\t{\n\t\tOFFSET 0 -1e300 0\n")),
+            "bad.bvh: line 8: OFFSET of JOINT knee: '-1e300' is beyond 1e+09 (times the scale)");
   EXPECT_EQ(error_of(small_file("", "Frames: 1\nFrame Time: 0.1\n0 0 0 1,5 0 0\n")),
             "bad.bvh: line 10: frame 0 value 3 (Zrotation of hip) '1,5' is not a number");
   EXPECT_EQ(error_of(small_file("", "Frames: 3\nFrame Time: 0.1\n0 0 0 0 0 0\n0 0 0 0 0 0\n")),
@@ -346,6 +353,23 @@ TEST(Bvh, WalkPosesSetAsFramesKeepTheirPositions) {
       EXPECT_LT((before.global_positions[j] - after.global_positions[j]).norm(), 1e-9);
     }
   }
+}
+
+// Indentation stops deepening at 32 tabs: a 20,000-deep chain indented in full would be 1.6 GB
+// of tabs; its file stays about 4 MB and reads back the same.
+TEST(Bvh, ADeepChainIsWrittenInLinearSize) {
+  BvhClip chain;
+  const int depth = 20000;
+  for (int j = 0; j < depth; ++j)
+    chain.skeleton.add_joint("j" + std::to_string(j), j - 1, Vec3(0, 1, 0));
+  chain.channels.assign(depth, {BvhChannel::z_rotation});
+  chain.end_sites.assign(depth, false);
+  chain.motion = Eigen::MatrixXd::Zero(1, depth);
+  const std::string text = write_bvh(chain);
+  EXPECT_LT(text.size(), 5'000'000u);
+  const auto back = read_bvh(text, "deep.bvh");
+  ASSERT_TRUE(back) << back.error().message;
+  EXPECT_EQ(back->skeleton.parents, chain.skeleton.parents);
 }
 
 TEST(Bvh, WritingRefusesClipsAFileCannotHold) {

@@ -162,7 +162,29 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{R"({"colliders": [{"shape": "mesh", "mesh": "missing.obj"}]})",
                  "colliders[0].mesh: " +
                      (std::filesystem::current_path() / "missing.obj").string() + ": no such file"},
-        BadScene{R"({"ground": {"friction": -1}})", "the ground's friction must be >= 0, got -1"},
+        BadScene{R"({"ground": {"friction": -1}})",
+                 "the ground's friction must be between 0 and 10, got -1"},
+        BadScene{R"({"frames": 3, "frames": 1000000})",
+                 "the key 'frames' appears twice in one object (which one was meant?)"},
+        BadScene{R"({"cloth": {"grid": 4, "size": 1, "grid": 5}})",
+                 "the key 'grid' appears twice in one object (which one was meant?)"},
+        BadScene{R"({"colliders": [{"velocity": [1e300, 0, 0]}]})",
+                 "collider 'colliders[0]': linear velocity must have each coordinate between "
+                 "-1e+06 and 1e+06, got (1e+300, 0, 0)"},
+        BadScene{R"({"colliders": [{"position": [0, 1e300, 0]}]})",
+                 "collider 'colliders[0]': initial position must have each coordinate between "
+                 "-1e+06 and 1e+06, got (0, 1e+300, 0)"},
+        BadScene{R"({"colliders": [{"angular_velocity": [0, 1e300, 0]}]})",
+                 "collider 'colliders[0]': angular velocity must have each coordinate between "
+                 "-1e+06 and 1e+06, got (0, 1e+300, 0)"},
+        BadScene{R"({"colliders": [{"friction": 1e300}]})",
+                 "collider 'colliders[0]': friction must be between 0 and 10, got 1e+300"},
+        BadScene{R"({"colliders": [{"keyframes": [{"time": 1e300}]}]})",
+                 "collider 'colliders[0]': keyframe 0 time (s) must be between -1e+06 and "
+                 "1e+06, got 1e+300"},
+        BadScene{R"({"ground": {}, "contact": {"stiffness": 1e300}})",
+                 "contact stiffness (J/m^4, 0: automatic) must be between 0 and 1e+20, got "
+                 "1e+300"},
         BadScene{R"({"solver": {"integrator": "rk4"}})",
                  "solver.integrator: unknown integrator 'rk4' (expected one of: " +
                      integrator_names() + ")"},

@@ -63,6 +63,8 @@ TEST(JointLimitsFile, EachMistakeIsNamedByItsKey) {
   const std::pair<const char*, const char*> cases[] = {
       {"[1, 2]", "limits.json: expected an object keyed by joint name {\"LeftKnee\": {...}}"},
       {"{", "limits.json: not valid JSON ("},
+      {R"({"Knee": {"type": "hinge", "type": "ball"}})",
+       "limits.json: the key 'type' appears twice in one object (which one was meant?)"},
       {R"({"Knee": 3})", "limits.json: Knee: expected an object {...}, got a number"},
       {R"({"Knee": {}})", "limits.json: Knee.type: required: \"hinge\", \"ball\" or \"free\""},
       {R"({"Knee": {"type": "hnge"}})",

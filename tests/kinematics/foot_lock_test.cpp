@@ -26,10 +26,12 @@ TEST(FootLock, MissingLegJointsAreNamed) {
   d.add_joint("LeftKnee", 1, Vec3(0, -0.4, 0));
   const auto skeleton = build_skeleton(d);
   ASSERT_TRUE(skeleton);
-  EXPECT_EQ(find_biped_legs(*skeleton).error().message, "foot lock needs a joint named LeftAnkle");
+  EXPECT_EQ(find_biped_legs(*skeleton).error().message,
+            "no joint named LeftAnkle: a biped's legs are found by name (LeftHip, LeftKnee, "
+            "LeftAnkle and the same on the right)");
   d.add_joint("LeftAnkle", 0, Vec3(0, -0.4, 0));
   EXPECT_EQ(find_biped_legs(*build_skeleton(d)).error().message,
-            "foot lock needs LeftKnee to be the parent of LeftAnkle");
+            "a biped's leg needs LeftKnee to be the parent of LeftAnkle");
 }
 
 TEST(FootLock, KneeFlexionIsSignedByTheForwardSide) {

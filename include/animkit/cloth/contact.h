@@ -27,6 +27,7 @@
 #include "animkit/collision/collider.h"
 #include "animkit/core/result.h"
 #include "animkit/core/triangle_mesh.h"
+#include "animkit/core/validation.h"
 
 namespace animkit {
 
@@ -55,6 +56,15 @@ inline std::optional<BarrierHessian> barrier_hessian_named(std::string_view name
     if (kBarrierHessianNames[i] == name) return static_cast<BarrierHessian>(i);
   return std::nullopt;
 }
+
+/// The smallest gap, as a fraction of the thickness, a contact pair may start at
+/// (ContactTerm::check_start): the barrier's gradient grows as the inverse of the gap, and a
+/// pair at zero (a particle on a surface, coincident sheets) has none to start from.
+inline constexpr double kMinStartGapFraction = 1e-6;
+
+/// A barrier stiffness given by hand (J/m^4): the automatic one for cloth of a gram to a
+/// kilogram per particle and a thickness of 0.1 to 10 mm lies between about 1e4 and 1e16.
+inline constexpr ParameterRange kContactStiffnessRange{0.0, 1e20};
 
 struct ContactSettings {
   /// dhat, m: the barrier acts on pairs closer than this (the cloth's thickness), > 0.
@@ -133,6 +143,13 @@ class ContactTerm final : public EnergyTerm {
   /// False while a collider is short of its pose at the substep's end (CCD held it back).
   bool settled() const override;
   bool gaps_healthy(const Eigen::VectorXd& x) const override;
+  /// Fails, naming the particles and the obstacle, when the cloth at x cannot start against
+  /// the obstacles where they are now: a pair closer than kMinStartGapFraction of the
+  /// thickness (the barrier is infinite at contact), or an edge of the cloth through an
+  /// obstacle's triangle, an obstacle's edge through the cloth, or, with self-contact, the
+  /// cloth through itself (no barrier acts between crossing primitives, so such a start would
+  /// run on crossed). IPC keeps a start that passes intersection-free.
+  Result<void> check_start(const Eigen::VectorXd& x) const;
 
   /// Drives collider `index` (of ContactObstacles::colliders, in order) by hand from now on
   /// (e.g. the viewer's mouse): the next substep moves it from where it is to `target` (world

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "animkit/cloth/cloth_model.h"
+#include "animkit/cloth/cloth_world.h"
 #include "animkit/cloth/integrator_settings.h"
 #include "animkit/core/result.h"
 
@@ -37,6 +38,13 @@ struct IntegratorChoice {
 /// slow ones would otherwise dominate the trial's cost. Errors: an invalid scene, dt or
 /// tolerance, trial_steps < 1, or every candidate diverging.
 Result<IntegratorChoice> choose_integrator(const ClothDesc& scene, double dt, double tolerance,
+                                           int trial_steps = 3);
+
+/// The same for a whole world: each candidate runs the world's first `trial_steps` steps of
+/// its time step with its colliders, ground, contact, friction and air, and with contact or
+/// air only the integrators that take energy terms (IntegratorEntry::takes_energy_terms)
+/// compete. Errors: those of building the world, and as above.
+Result<IntegratorChoice> choose_integrator(const ClothWorldDesc& world, double tolerance,
                                            int trial_steps = 3);
 
 }  // namespace animkit

@@ -15,6 +15,9 @@ struct IntegratorEntry {
   IntegratorSettings defaults;
   /// Substeps per step when the caller asks for the default (0): explicit Euler needs many.
   int default_substeps = 1;
+  /// Whether the integrator takes extra energy terms (contact, friction, air): Newton's do;
+  /// the others minimize the cloth's own energy only (ClothSimulator::add_energy_term).
+  bool takes_energy_terms = false;
 };
 
 /// Every integrator, the default (the lab's implicit Euler with PCG) first.

@@ -13,6 +13,7 @@
 //   flat: a curved input mesh is pulled towards flat by its bending stiffness.
 #include <Eigen/Geometry>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "animkit/cloth/cloth_model.h"
@@ -40,6 +41,9 @@ struct MeshClothOptions {
   /// Boxes (world space) pinning every vertex inside them (borders included); each must hold
   /// at least one vertex.
   std::vector<Eigen::AlignedBox3d> pin_boxes = {};
+  /// Where the mesh came from, e.g. its OBJ file's path: make_mesh_cloth's errors start with
+  /// it ("sheet.obj: mesh edge ... is shared by 3 triangles"). Empty: no prefix.
+  std::string source = {};
 };
 
 /// The cloth's description. Errors: the mesh's (TriangleMesh::validate, a non-manifold edge, a

@@ -6,31 +6,17 @@
 // infinities or noise (stiffness 1e300 gave infinite gradients and a frozen cloth that reported
 // convergence). So values beyond them are refused up front, naming the range, rather than
 // simulated wrong. The ranges span far more than any real cloth (and the lab's sliders).
-#include <cmath>
-#include <string>
-
 #include "animkit/core/validation.h"
 
 namespace animkit {
-
-struct ParameterRange {
-  double min, max;
-
-  bool contains(double value) const { return std::isfinite(value) && value >= min && value <= max; }
-  /// "<what> must be between <min> and <max>, got <value>".
-  std::string refusal(const std::string& what, double value) const {
-    return what + " must be between " + format_number(min) + " and " + format_number(max) +
-           ", got " + format_number(value);
-  }
-};
 
 inline constexpr ParameterRange kMassRange{1e-6, 1e6};        ///< per particle, kg
 inline constexpr ParameterRange kStiffnessRange{1e-6, 1e9};   ///< per spring, N/m
 inline constexpr ParameterRange kDampingRange{0.0, 1e6};      ///< dashpot, N s/m
 inline constexpr ParameterRange kGravityRange{-1e4, 1e4};     ///< along -y, m/s^2
 inline constexpr ParameterRange kTimeStepRange{1e-6, 10.0};   ///< per step, s
-inline constexpr ParameterRange kCoordinateRange{-1e6, 1e6};  ///< positions, m
-inline constexpr ParameterRange kSpeedRange{-1e6, 1e6};       ///< velocity components, m/s
+// Positions, velocities, times and friction coefficients: kCoordinateRange and its kin in
+// core/validation.h, shared with the colliders.
 /// Substeps per step: enough for explicit Euler at any stable setting the lab's sliders allow
 /// (the lab's 1000) and more, while a run still ends.
 inline constexpr int kMaxSubsteps = 100'000;

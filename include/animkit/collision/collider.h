@@ -4,6 +4,7 @@
 // surface mesh and its edges) plus per-instance state (the time, the pose, the surface's world
 // vertices), which is all that changes as the collider moves.
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,7 +34,13 @@ struct ColliderDesc {
   std::optional<Error> validate() const;
 };
 
-/// Each description valid and every name different (they name OBJ objects).
+/// Most triangles the colliders of one scene may have together: each costs about 0.5 KB in
+/// contact's structures, so this bounds them near 1 GB (a 4 MB scene file of 60,000 default
+/// spheres asked for 23 GB).
+inline constexpr std::size_t kMaxColliderTriangles = 2'000'000;
+
+/// Each description valid, every name different (they name OBJ objects) and their surfaces
+/// within kMaxColliderTriangles together, checked before any surface is made.
 std::optional<Error> validate_colliders(const std::vector<ColliderDesc>& colliders);
 
 /// What a Collider shares between copies and never changes.

@@ -4,6 +4,7 @@
 // vertices, not just positions), oriented outward (counter-clockwise seen from outside) and has
 // every vertex on the analytic surface, so the mesh is inscribed in the shape.
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "animkit/collision/collider_shape.h"
@@ -25,6 +26,10 @@ inline constexpr int kMinTessellation = 0, kMaxTessellation = 6;
 /// - plane: the square of side display_size centred on the origin in y = 0, normal +y, for
 ///   drawing and export only (not closed: contact treats the plane as a half-space).
 TriangleMesh collider_surface(const ColliderShape& shape, int tessellation);
+
+/// How many triangles collider_surface(shape, tessellation) makes, without making them (so a
+/// scene can be refused before it allocates).
+std::size_t surface_triangle_count(const ColliderShape& shape, int tessellation);
 
 /// Each undirected edge of the mesh once, as (smaller index, larger index), sorted: the edges
 /// edge-edge contact runs over.

@@ -50,4 +50,36 @@ inline std::string to_string(const Vec3& v) {
   return s.str();
 }
 
+/// A closed interval of accepted values. Values beyond a range are refused up front, naming it:
+/// the solvers multiply positions, speeds and coefficients together, and past these bounds a
+/// step computes infinities (a collider thrown at 1e300 m/s wrote `inf` into its cache).
+struct ParameterRange {
+  double min, max;
+
+  bool contains(double value) const { return std::isfinite(value) && value >= min && value <= max; }
+  bool contains(const Vec3& v) const {
+    return contains(v.x()) && contains(v.y()) && contains(v.z());
+  }
+  /// "<what> must be between <min> and <max>, got <value>".
+  std::string refusal(const std::string& what, double value) const {
+    return what + " must be between " + format_number(min) + " and " + format_number(max) +
+           ", got " + format_number(value);
+  }
+  /// "<what> must have each coordinate between <min> and <max>, got (x, y, z)".
+  std::string refusal(const std::string& what, const Vec3& v) const {
+    return what + " must have each coordinate between " + format_number(min) + " and " +
+           format_number(max) + ", got " + to_string(v);
+  }
+};
+
+/// The ranges every physical input shares; they span far more than any scene (a 2,000 km
+/// world, a bullet's speed a thousand times over) while keeping squares and products finite.
+inline constexpr ParameterRange kCoordinateRange{-1e6, 1e6};    ///< positions, m
+inline constexpr ParameterRange kSpeedRange{-1e6, 1e6};         ///< velocity components, m/s
+inline constexpr ParameterRange kAngularSpeedRange{-1e6, 1e6};  ///< rad/s, per axis
+inline constexpr ParameterRange kTimeRange{-1e6, 1e6};          ///< keyframe times, s
+/// Coulomb coefficients: real pairs stay below about 2 (rubber on rubber); past 10 the lagged
+/// friction forces would swamp every other force of a step.
+inline constexpr ParameterRange kFrictionRange{0.0, 10.0};
+
 }  // namespace animkit

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "animkit/core/result.h"
+#include "animkit/core/validation.h"
 #include "animkit/kinematics/skeleton.h"
 
 namespace animkit {
@@ -66,6 +67,13 @@ struct BvhReadOptions {
   /// Finite and > 0; default 1.
   double scale = 1.0;
 };
+
+/// Every offset and position value of a clip (file units times the read scale) and every
+/// rotation value (degrees) lies in this range: a thousand kilometres in metres or a million
+/// in centimetres, and far more turns than any motion, while the skeleton's sums and products
+/// stay finite (a Hips Xposition of 1e300 gave infinite joint positions and an "IK error" of
+/// inf reported as success).
+inline constexpr ParameterRange kBvhValueRange{-1e9, 1e9};
 
 /// Largest BVH file read: hours of dense motion capture, far beyond any clip we animate.
 constexpr std::uintmax_t kMaxBvhFileBytes = 512u << 20;

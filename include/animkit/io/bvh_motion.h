@@ -14,7 +14,9 @@ SkeletalMotion motion_from_bvh(const BvhClip& clip);
 void motion_to_bvh(const SkeletalMotion& motion, BvhClip& clip);
 
 /// Multiplies the clip's offsets and position channels by `factor` (> 0): e.g. 1 / the read
-/// scale writes a clip read in metres back in its file's own units.
-void scale_bvh_clip(BvhClip& clip, double factor);
+/// scale writes a clip read in metres back in its file's own units. Fails, leaving the clip
+/// as it was, on a factor that is not a finite number > 0 or that would put a value beyond
+/// kBvhValueRange.
+Result<void> scale_bvh_clip(BvhClip& clip, double factor);
 
 }  // namespace animkit

@@ -12,8 +12,7 @@ namespace animkit {
 namespace {
 
 std::optional<Error> check_coefficient(const std::string& what, double mu) {
-  if (!std::isfinite(mu) || mu < 0.0)
-    return Error{"friction " + what + " must be >= 0, got " + format_number(mu)};
+  if (!kFrictionRange.contains(mu)) return Error{kFrictionRange.refusal("friction " + what, mu)};
   return std::nullopt;
 }
 
