@@ -100,7 +100,10 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
   const auto cloth = build_world_cloth(*world_desc);
   if (!cloth) return report_error(cloth.error().message);
   const double dt = world_desc->time_step;
-  if (args.integrator == "auto" && (args.scene.empty() || args.given("--integrator"))) {
+  const bool choose = args.given("--integrator") ? args.integrator == "auto"
+                      : args.scene.empty()       ? args.integrator == "auto"
+                                                 : world_desc->choose_integrator;
+  if (choose) {
     const double tolerance =
         tolerance_of(world_desc->simulation.integrator).value_or(args.tolerance);
     auto choice = choose_integrator(*world_desc, tolerance);
@@ -240,6 +243,15 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
                 pictures->wants_png() ? ", final.png" : "", args.out.c_str());
   }
   if (!args.pictures.video.empty()) std::printf("wrote %s\n", args.pictures.video.c_str());
+  // Results, but not what the tolerance promised: said where it cannot be missed.
+  const long unconverged = std::count_if(steps.begin(), steps.end(),
+                                         [](const StepReport& step) { return !step.converged; });
+  if (unconverged > 0) {
+    std::fprintf(stderr,
+                 "animkit: warning: %ld of %d steps stopped short of the tolerance (the solver's "
+                 "iteration cap); metrics.json lists each step\n",
+                 unconverged, s.frames);
+  }
   return 0;
 }
 

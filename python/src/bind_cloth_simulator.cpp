@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "animkit/cloth/cloth_world.h"
+#include "animkit/cloth/integrator_choice.h"
 #include "animkit/cloth/integrator_registry.h"
 #include "bindings.h"
 #include "cloth_convert.h"
@@ -100,8 +101,20 @@ std::unique_ptr<SimulatorObject> make_simulator(const ClothWorldDesc& scene) {
     py::gil_scoped_release release;
     // From the object's own copy: `scene` is Python's, which another thread may change while
     // this one runs without the GIL.
-    cloth = build_world_cloth(object->desc);
-    if (cloth) world = build_cloth_world(object->desc);
+    if (object->desc.choose_integrator) {  // the scene said "auto": measure, then take the winner
+      const double tolerance = tolerance_of(object->desc.simulation.integrator).value_or(1e-6);
+      const auto choice = choose_integrator(object->desc, tolerance);
+      if (choice) {
+        object->desc.simulation.integrator = choice->settings;
+        object->desc.choose_integrator = false;
+      } else {
+        cloth = fail(choice.error().message);  // raised below, as a sheet's error would be
+      }
+    }
+    if (!object->desc.choose_integrator) {
+      cloth = build_world_cloth(object->desc);
+      if (cloth) world = build_cloth_world(object->desc);
+    }
   }
   object->cloth = unwrap(std::move(cloth));
   object->world = std::make_unique<ClothWorld>(unwrap(std::move(world)));

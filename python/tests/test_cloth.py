@@ -544,3 +544,12 @@ def test_divergence_raises_and_keeps_the_state():
         runner.run(frames=5)
     np.testing.assert_array_equal(runner.positions, kept)
     assert runner.steps_taken == 0
+
+
+def test_a_scene_asking_for_auto_gets_a_measured_integrator_that_takes_contact():
+    scene = animkit.parse_cloth_scene(
+        '{"cloth": {"grid": 4, "size": 1, "height": 0.3, "material": "cotton", "pins": "none"},'
+        ' "ground": {}, "solver": {"integrator": "auto"}, "frames": 2}')
+    simulator = animkit.ClothSimulator(scene)
+    assert simulator.integrator_name.startswith("implicit-")
+    simulator.run()

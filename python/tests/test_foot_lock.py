@@ -147,6 +147,11 @@ def test_bad_input(walk):
                                motion.frame_time)
     with pytest.raises(animkit.Error, match="foot lock needs at least 2 frames, got 1"):
         animkit.lock_feet(s, one_frame)
+    # A root far beyond any scene once gave an IK error of inf as a result.
+    far = motion.local_translations.copy()
+    far[0, 0, 0] = 1e300
+    with pytest.raises(animkit.Error, match="foot lock motion frame 0, joint 0: translation"):
+        animkit.lock_feet(s, animkit.Motion(motion.local_rotations, far, motion.frame_time))
     arm = animkit.Skeleton(["a", "b"], [-1, 0], [[0, 0, 0], [1, 0, 0]])
     with pytest.raises(animkit.Error, match="no joint named LeftHip: a biped's legs are found by name"):
         animkit.lock_feet(arm, motion)

@@ -53,6 +53,7 @@ std::string cloth_metrics_json(const ClothRunInfo& info, std::span<const StepRep
                                    {"projected_iterations", r.projected_iterations},
                                    {"gradient_norm_start", r.gradient_norm_start},
                                    {"gradient_norm_end", r.gradient_norm_end},
+                                   {"gradient_tolerance", r.gradient_tolerance},
                                    {"newton_speed_end", r.newton_speed_end},
                                    {"converged", r.converged},
                                    {"energy", r.energy},

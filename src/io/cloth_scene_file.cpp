@@ -39,7 +39,7 @@ class SceneReader {
     }
     if (const auto* contact = scene.object("contact")) read_contact(*contact, desc);
     if (const auto* wind = scene.object("wind")) desc.air = read_air(*wind);
-    if (const auto* solver = scene.object("solver")) read_solver(*solver, desc.simulation);
+    if (const auto* solver = scene.object("solver")) read_solver(*solver, desc);
     desc.time_step = scene.number("dt").value_or(desc.time_step);
     desc.frames = scene.integer("frames").value_or(desc.frames);
     scene.finish();
@@ -222,13 +222,16 @@ class SceneReader {
     return air;
   }
 
-  static void read_solver(const nlohmann::json& object, SimulationOptions& simulation) {
+  static void read_solver(const nlohmann::json& object, ClothWorldDesc& desc) {
     JsonFields fields(object, "solver");
-    if (auto name = fields.string("integrator")) {
+    SimulationOptions& simulation = desc.simulation;
+    if (auto name = fields.string("integrator"); name && *name == "auto") {
+      desc.choose_integrator = true;  // the default's settings until a run has measured
+    } else if (name) {
       const IntegratorEntry* entry = find_integrator(*name);
       if (!entry) {
         fields.error("integrator", "unknown integrator " + quote_input(*name) +
-                                       " (expected one of: " + integrator_names() + ")");
+                                       " (expected auto or one of: " + integrator_names() + ")");
       }
       simulation.integrator = entry->defaults;
     }

@@ -8,6 +8,8 @@
 #include <limits>
 #include <string>
 
+#include "animkit/core/validation.h"
+#include "animkit/kinematics/ik_types.h"
 #include "animkit/kinematics/two_bone_ik.h"
 
 namespace animkit {
@@ -31,6 +33,16 @@ std::optional<Error> check_motion(const Skeleton& skeleton, const SkeletalMotion
   }
   if (!(std::isfinite(motion.frame_time) && motion.frame_time > 0.0)) {
     return Error{"foot lock frame time must be > 0 seconds"};
+  }
+  // The range of IK targets: a root at 1e300 m gave infinite joint positions and an "IK error"
+  // of inf reported as a result.
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& t = motion.local_translations[i];
+    if (!is_finite(t) || t.cwiseAbs().maxCoeff() > kMaxTargetCoordinate) {
+      return Error{"foot lock motion frame " + std::to_string(i / motion.joint_count) + ", joint " +
+                   std::to_string(i % motion.joint_count) + ": translation " + to_string(t) +
+                   " is not finite or beyond " + format_number(kMaxTargetCoordinate)};
+    }
   }
   return std::nullopt;
 }

@@ -186,7 +186,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "contact stiffness (J/m^4, 0: automatic) must be between 0 and 1e+20, got "
                  "1e+300"},
         BadScene{R"({"solver": {"integrator": "rk4"}})",
-                 "solver.integrator: unknown integrator 'rk4' (expected one of: " +
+                 "solver.integrator: unknown integrator 'rk4' (expected auto or one of: " +
                      integrator_names() + ")"},
         BadScene{R"({"solver": {"integrator": "vbd", "velocity_tolerance": 1e-3}})",
                  "solver.velocity_tolerance: applies to the Newton integrators (implicit-*) "

@@ -217,6 +217,11 @@ TEST_F(FootLockWalk, RefusesBadInputWithAMessage) {
   EXPECT_EQ(lock_feet(w->skeleton, w->legs, wrong, {}, ws, out).error().message,
             "foot lock motion has 3 joints but the skeleton " +
                 std::to_string(w->skeleton.joint_count()));
+  SkeletalMotion far = w->motion;
+  far.local_translations[w->skeleton.joint_count() + 0] = Vec3(1e300, 0, 0);  // frame 1, root
+  EXPECT_EQ(lock_feet(w->skeleton, w->legs, far, {}, ws, out).error().message,
+            "foot lock motion frame 1, joint 0: translation (1e+300, 0, 0) is not finite or "
+            "beyond 1e+09");
 }
 
 }  // namespace

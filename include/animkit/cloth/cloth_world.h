@@ -43,6 +43,10 @@ struct ClothWorldDesc {
   int friction_passes = 1;
   std::optional<AirSettings> air;  ///< wind and air drag; none by default (still, no drag)
   SimulationOptions simulation;    ///< the integrator and its settings
+  /// The scene asked for the fastest integrator ("auto"): a run measures them on its first
+  /// steps (choose_integrator) and takes the winner; until then `simulation` holds the
+  /// default's settings (with the scene's tolerance).
+  bool choose_integrator = false;
   double time_step = 1.0 / 60.0;   ///< s per frame, in kTimeStepRange (the lab's 1/60)
   int frames = 300;                ///< frames to simulate, in [1, kMaxWorldFrames]
 
