@@ -118,6 +118,19 @@ TEST(HostileInputCli, RunningOutOfMemoryIsOneLine) {
                  "out of memory", out);
 }
 
+// A mesh's error named neither the file nor the option it came from.
+TEST(HostileInputCli, AMeshErrorNamesItsFile) {
+  const fs::path dir = animkit::testing_support::fresh_dir("hostile_fin");
+  std::ofstream(dir / "fin.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n"
+                                    "f 1 2 3\nf 2 1 4\nf 1 2 5\n";
+  const auto r = run_command(kHostileCli + " cloth --mesh " + (dir / "fin.obj").string() +
+                             " --frames 1 --out " + (dir / "out").string());
+  expect_refused(
+      r,
+      (dir / "fin.obj").string() + ": mesh edge between vertices 0 and 1 is shared by 3 triangles",
+      dir / "out");
+}
+
 // Local/global iterations stop at their cap far from 1e-12 on denim: results, with a warning.
 TEST(HostileInputCli, StepsShortOfTheToleranceAreWarnedAbout) {
   const auto r = run_command(kHostileCli +

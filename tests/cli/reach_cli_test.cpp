@@ -138,6 +138,15 @@ TEST(ReachCli, UnreachableTargetWritesTheClosestPoseAndSaysSo) {
 TEST(ReachCli, BadInputIsOneLineAndWritesNothing) {
   const fs::path dir = fresh_dir("errors");
   std::ofstream(dir / "typo.json") << R"({"LeftElbowe": {"type": "free"}})";
+  // A one-joint clip with no frames, and the same with two: not a biped.
+  const std::string stick =
+      "HIERARCHY\nROOT hip\n{\n\tOFFSET 0 0 0\n\tCHANNELS 3 Xposition "
+      "Yposition Zposition\n\tEnd Site\n\t{\n\t\tOFFSET 0 1 0\n\t}\n}\n"
+      "MOTION\nFrame Time: 0.1\n";
+  std::ofstream(dir / "empty.bvh")
+      << stick.substr(0, stick.find("Frame Time")) + "Frames: 0\nFrame Time: 0.1\n";
+  std::ofstream(dir / "stick.bvh")
+      << stick.substr(0, stick.find("Frame Time")) + "Frames: 2\nFrame Time: 0.1\n0 0 0\n0 0 0\n";
   const std::string in = " --in " + kWalk.string() + " --scale 0.056444";
   const std::pair<std::string, std::string> cases[] = {
       {"reach" + in + " --target nan 1 0",
@@ -156,6 +165,10 @@ TEST(ReachCli, BadInputIsOneLineAndWritesNothing) {
       {"reach" + in + " --target 0 1 0 --tolerance 0", "tolerance must be a positive"},
       {"reach --in " + (dir / "missing.bvh").string() + " --target 0 1 0", "missing.bvh"},
       {"reach" + in, "--target is required"},
+      {"reach --in " + (dir / "empty.bvh").string() + " --target 0 1 0",
+       "empty.bvh: the clip has no frames"},
+      {"reach --in " + (dir / "stick.bvh").string() + " --target 0 1 0",
+       "stick.bvh: no joint named LeftHip: a biped's legs are found by name"},
   };
   for (const auto& [args, message] : cases) {
     const auto r = run_command(kCli + " " + args + " --out " + (dir / "o").string());
