@@ -36,9 +36,10 @@ CONFIGURE_SANITIZE = $(CMAKE) -S . -B $(SANITIZE_DIR) $(call GENERATOR,$(SANITIZ
 deps:
 	bash scripts/install-deps.sh
 
+# Everything, the benchmark programs included (they are not in `all`: `make test` skips them).
 build: deps
 	$(CONFIGURE_RELEASE)
-	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS)
+	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target all animkit_benchmarks
 
 demo: deps
 	$(CONFIGURE_RELEASE)

@@ -234,8 +234,10 @@ void bind_cloth_simulator(py::module_& m) {
       "positions and velocities are read-only numpy views of the simulator's own state, "
       "updated in place by every step.")
       .def(py::init(&make_simulator),
-           "Builds the scene's world. Raises animkit.Error naming the first problem (an invalid "
-           "scene, a particle starting inside a collider or below the ground).",
+           "Builds the scene's world (a scene file's \"integrator\": \"auto\" is resolved "
+           "here: the integrators run its first 3 steps and the fastest is kept). Raises "
+           "animkit.Error naming the first problem (an invalid scene, a cloth starting inside, "
+           "touching or through a collider, below the ground, or through itself).",
            py::arg("scene"))
       .def(
           "step",

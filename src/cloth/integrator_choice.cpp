@@ -99,7 +99,7 @@ Result<IntegratorChoice> choose_integrator(const ClothWorldDesc& world, double t
           SimulationOptions options) -> Result<std::optional<ClothSimulator>> {
     if (has_terms && !entry.takes_energy_terms) return std::optional<ClothSimulator>();
     ClothWorldDesc desc = world;
-    desc.simulation = options;
+    desc.simulation.integrator = options.integrator;  // the world's substeps kept
     auto built = build_cloth_world(desc, *cloth);
     if (!built) return fail(built.error().message);
     return std::optional<ClothSimulator>(std::move(built->simulator));

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
 #include "../stacked_vectors.h"
@@ -60,24 +61,40 @@ Boxed boxed(const std::array<int, K>& vertices, int index,
   return b;
 }
 
-bool overlap_yz(const Boxed& a, const Boxed& b) {
-  return a.lo.y() <= b.hi.y() && b.lo.y() <= a.hi.y() && a.lo.z() <= b.hi.z() &&
-         b.lo.z() <= a.hi.z();
+bool overlap(const Boxed& a, const Boxed& b) {
+  return (a.lo.array() <= b.hi.array()).all() && (b.lo.array() <= a.hi.array()).all();
+}
+
+// The axis along which the boxes' lower corners spread most: a sweep along it keeps few boxes
+// open at once (a sheet in the plane x = 0 would keep all of them open along x).
+int sweep_axis(const std::vector<Boxed>& a, const std::vector<Boxed>& b) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const auto* list : {&a, &b}) {
+    for (const Boxed& box : *list) {
+      lo = lo.cwiseMin(box.lo);
+      hi = hi.cwiseMax(box.lo);
+    }
+  }
+  int axis = 0;
+  (hi - lo).maxCoeff(&axis);
+  return axis;
 }
 
 // Calls f(edge index, triangle index) for every edge box overlapping a triangle box: a sweep
-// along x over both lists sorted by their boxes' lower x (each list keeps the boxes the sweep
-// has entered and whose upper x it has not yet passed).
+// over both lists sorted by their boxes' lower corner along one axis (each list keeps the boxes
+// the sweep has entered and whose upper corner it has not yet passed).
 template <class F>
 void for_each_overlap(std::vector<Boxed> edges, std::vector<Boxed> triangles, F f) {
-  const auto by_lo = [](const Boxed& a, const Boxed& b) {
-    return a.lo.x() < b.lo.x() || (a.lo.x() == b.lo.x() && a.index < b.index);
+  if (edges.empty() || triangles.empty()) return;
+  const int axis = sweep_axis(edges, triangles);
+  const auto by_lo = [axis](const Boxed& a, const Boxed& b) {
+    return a.lo[axis] < b.lo[axis] || (a.lo[axis] == b.lo[axis] && a.index < b.index);
   };
   std::sort(edges.begin(), edges.end(), by_lo);
   std::sort(triangles.begin(), triangles.end(), by_lo);
   std::vector<const Boxed*> open_edges, open_triangles;
-  const auto close_before = [](std::vector<const Boxed*>& open, double x) {
-    std::erase_if(open, [x](const Boxed* b) { return b->hi.x() < x; });
+  const auto close_before = [axis](std::vector<const Boxed*>& open, double at) {
+    std::erase_if(open, [axis, at](const Boxed* b) { return b->hi[axis] < at; });
   };
   std::size_t e = 0, t = 0;
   while (e < edges.size() || t < triangles.size()) {
@@ -85,15 +102,15 @@ void for_each_overlap(std::vector<Boxed> edges, std::vector<Boxed> triangles, F 
         t == triangles.size() || (e < edges.size() && !by_lo(triangles[t], edges[e]));
     if (edge_next) {
       const Boxed& edge = edges[e++];
-      close_before(open_triangles, edge.lo.x());
+      close_before(open_triangles, edge.lo[axis]);
       for (const Boxed* triangle : open_triangles)
-        if (overlap_yz(edge, *triangle)) f(edge.index, triangle->index);
+        if (overlap(edge, *triangle)) f(edge.index, triangle->index);
       open_edges.push_back(&edge);
     } else {
       const Boxed& triangle = triangles[t++];
-      close_before(open_edges, triangle.lo.x());
+      close_before(open_edges, triangle.lo[axis]);
       for (const Boxed* edge : open_edges)
-        if (overlap_yz(*edge, triangle)) f(edge->index, triangle.index);
+        if (overlap(*edge, triangle)) f(edge->index, triangle.index);
       open_triangles.push_back(&triangle);
     }
   }
