@@ -46,7 +46,10 @@ Result<void> scale_bvh_clip(BvhClip& clip, double factor) {
   for (Eigen::Index c : position_columns)
     if (clip.motion.rows() > 0)
       largest = std::max(largest, clip.motion.col(c).cwiseAbs().maxCoeff());
-  if (largest > kBvhValueRange.max / factor) {  // divided: the product may overflow
+  // Compared without overflow either way (the tests trap floating-point overflow).
+  const bool beyond =
+      factor > 1.0 ? largest > kBvhValueRange.max / factor : largest * factor > kBvhValueRange.max;
+  if (beyond) {
     return fail("scaling by " + format_number(factor) + " puts a value of " +
                 format_number(largest) + " beyond " + format_number(kBvhValueRange.max));
   }
