@@ -182,6 +182,7 @@ TEST(ClothWorld, RefusesAClothStartingOnASurface) {
   TriangleMesh& mesh = twice.mesh;
   mesh.triangles.resize(8);
   mesh.vertices.resize(9);
+  mesh.vertices.reserve(18);  // the copies below read from the vector they grow
   for (int k = 0; k < 9; ++k) mesh.vertices.push_back(mesh.vertices[k]);
   for (int t = 0; t < 8; ++t)
     mesh.triangles.push_back(
