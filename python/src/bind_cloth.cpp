@@ -43,6 +43,16 @@ void set_cloth(ClothWorldDesc& d, const py::handle& cloth) {
   }
 }
 
+// Settings, a registry name, or "auto" (the simulator measures and chooses).
+void set_integrator(ClothWorldDesc& d, const py::handle& value) {
+  if (py::isinstance<py::str>(value) && value.cast<std::string>() == "auto") {
+    d.choose_integrator = true;
+    return;
+  }
+  d.simulation.integrator = to_integrator(value);
+  d.choose_integrator = false;
+}
+
 std::string repr_scene(const ClothWorldDesc& d) {
   std::string colliders = "[";
   for (const ColliderDesc& c : d.colliders)
@@ -59,7 +69,8 @@ std::string repr_scene(const ClothWorldDesc& d) {
          ", self_friction=" + repr_number(d.self_friction) +
          ", friction_passes=" + std::to_string(d.friction_passes) +
          ", air=" + (d.air ? py::repr(py::cast(*d.air)).cast<std::string>() : "None") +
-         ", integrator=" + repr_integrator(d.simulation.integrator) +
+         ", integrator=" +
+         (d.choose_integrator ? std::string("'auto'") : repr_integrator(d.simulation.integrator)) +
          ", substeps=" + std::to_string(d.simulation.substeps) +
          ", dt=" + repr_number(d.time_step) + ", frames=" + std::to_string(d.frames) +
          ", material_name=" + quoted(d.material_name) + ")";
@@ -90,7 +101,7 @@ void bind_scenes(py::module_& m) {
              d.ground = ground;
              if (contact) d.contact = *contact;
              d.air = air;
-             if (!integrator.is_none()) d.simulation.integrator = to_integrator(integrator);
+             if (!integrator.is_none()) set_integrator(d, integrator);
              d.simulation.substeps = substeps;
              d.time_step = dt;
              d.frames = frames;
@@ -155,15 +166,18 @@ void bind_scenes(py::module_& m) {
       .def_property(
           "integrator",
           [](const ClothWorldDesc& d) { return integrator_object(d.simulation.integrator); },
-          [](ClothWorldDesc& d, py::object v) { d.simulation.integrator = to_integrator(v); },
+          [](ClothWorldDesc& d, py::object v) { set_integrator(d, v); },
           "The integrator's settings (a copy; assign it back to change the scene); accepts a "
-          "registry name too.")
+          "registry name too, or 'auto': ClothSimulator then measures the integrators on the "
+          "scene's first steps and keeps the fastest.")
       .def_property_readonly(
           "integrator_name",
           [](const ClothWorldDesc& d) {
-            return std::string(integrator_entry(d.simulation.integrator).name);
+            return d.choose_integrator
+                       ? std::string("auto")
+                       : std::string(integrator_entry(d.simulation.integrator).name);
           },
-          "The integrator's registry name, e.g. 'implicit-pcg'.")
+          "The integrator's registry name, e.g. 'implicit-pcg', or 'auto' (see integrator).")
       .def_property(
           "substeps", [](const ClothWorldDesc& d) { return d.simulation.substeps; },
           [](ClothWorldDesc& d, int v) { d.simulation.substeps = v; },

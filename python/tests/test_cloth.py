@@ -550,6 +550,12 @@ def test_a_scene_asking_for_auto_gets_a_measured_integrator_that_takes_contact()
     scene = animkit.parse_cloth_scene(
         '{"cloth": {"grid": 4, "size": 1, "height": 0.3, "material": "cotton", "pins": "none"},'
         ' "ground": {}, "solver": {"integrator": "auto"}, "frames": 2}')
+    assert scene.integrator_name == "auto" and "integrator='auto'" in repr(scene)
     simulator = animkit.ClothSimulator(scene)
     assert simulator.integrator_name.startswith("implicit-")
     simulator.run()
+    # The same from Python; a name assigned afterwards replaces it.
+    scene.integrator = "implicit-direct"
+    assert scene.integrator_name == "implicit-direct"
+    scene.integrator = "auto"
+    assert animkit.ClothSimulator(scene).integrator_name.startswith("implicit-")
