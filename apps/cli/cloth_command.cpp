@@ -249,7 +249,7 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
   if (unconverged > 0) {
     std::fprintf(stderr,
                  "animkit: warning: %ld of %d steps stopped short of the tolerance (the solver's "
-                 "iteration cap); metrics.json lists each step\n",
+                 "iteration cap)\n",
                  unconverged, s.frames);
   }
   return 0;
@@ -333,8 +333,8 @@ std::function<int()> add_cloth_command(CLI::App& app) {
     }
     for (const char* option :
          {"--grid", "--size", "--mesh", "--pin", "--pin-box", "--material", "--mass", "--stiffness",
-          "--damping", "--gravity", "--sphere", "--ground", "--thickness", "--no-self-contact",
-          "--wind", "--gust"}) {
+          "--damping", "--gravity", "--sphere", "--ground", "--thickness", "--friction",
+          "--no-self-contact", "--wind", "--gust"}) {
       if (cloth->count(option) > 0) args->world_options_given.emplace_back(option);
     }
     return run_cloth(*args);

@@ -5,6 +5,7 @@
 #include <exception>
 #include <string>
 
+#include "animkit/cloth/integrator_choice.h"
 #include "animkit/cloth/integrator_registry.h"
 #include "animkit/core/quote.h"
 #include "animkit/io/cloth_scene_source.h"
@@ -135,6 +136,13 @@ int run(int argc, char** argv) {
                                 " gives the whole scene (change it in the side panel)",
                             2);
       }
+    }
+    if (world->choose_integrator) {  // "auto": measured here, before the window opens
+      const double tolerance = tolerance_of(world->simulation.integrator).value_or(1e-6);
+      auto choice = choose_integrator(*world, tolerance);
+      if (!choice) return report_error(choice.error().message, 2);
+      world->simulation.integrator = choice->settings;
+      world->choose_integrator = false;
     }
     options.scene = SceneKind::cloth;
     options.cloth_world = NamedClothWorld{scene, std::move(*world)};

@@ -72,7 +72,7 @@ namespace {
 
 // The contact term over the colliders' surfaces at time 0 and the ground; refuses a cloth
 // that starts inside a collider, on or below the ground, touching or through a collider or
-// itself (ContactTerm::check_start).
+// itself, or a self-contact thickness beyond its edges (ContactTerm::check_start).
 Result<std::shared_ptr<ContactTerm>> make_contact(const ClothWorldDesc& desc,
                                                   const ClothSimulator& sim,
                                                   const std::vector<Collider>& colliders) {

@@ -106,7 +106,9 @@ int capsule_cylinder_rings(double radius, double half_length, int levels) {
   const int around = 8 << levels;
   const double segment = radius * 2.0 * std::numbers::pi / around;
   const double max_rings = 64 << levels;
-  return static_cast<int>(std::clamp(std::ceil(2.0 * half_length / segment), 1.0, max_rings));
+  // Compared before dividing: a radius of 1e-305 would overflow the quotient.
+  if (2.0 * half_length >= max_rings * segment) return static_cast<int>(max_rings);
+  return static_cast<int>(std::max(std::ceil(2.0 * half_length / segment), 1.0));
 }
 
 TriangleMesh capsule_surface(double radius, double half_length, int levels) {

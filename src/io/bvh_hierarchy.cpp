@@ -158,9 +158,11 @@ class HierarchyReader {
                               (parsed == Number::malformed ? " is not a number"
                                                            : " is not a finite number"));
       }
-      if (!kBvhValueRange.contains(value * scale_)) {
+      const bool raw_beyond = !kBvhValueRange.contains(value);  // as frame values are checked
+      if (raw_beyond || !kBvhValueRange.contains(value * scale_)) {
         return at(t.line, "OFFSET of " + label + ": " + quote_input(t.text) + " is beyond " +
-                              format_number(kBvhValueRange.max) + " (times the scale)");
+                              format_number(kBvhValueRange.max) +
+                              (raw_beyond ? "" : " (times the scale)"));
       }
       clip_.skeleton.rest_offsets[joint][axis] = value * scale_;
     }

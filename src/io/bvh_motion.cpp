@@ -50,8 +50,9 @@ Result<void> scale_bvh_clip(BvhClip& clip, double factor) {
   const bool beyond =
       factor > 1.0 ? largest > kBvhValueRange.max / factor : largest * factor > kBvhValueRange.max;
   if (beyond) {
-    return fail("scaling by " + format_number(factor) + " puts a value of " +
-                format_number(largest) + " beyond " + format_number(kBvhValueRange.max));
+    return fail("scaling by " + format_number(factor) + " puts a value beyond " +
+                format_number(kBvhValueRange.max) + " (" + format_number(largest) + " times " +
+                format_number(factor) + ")");
   }
   for (Vec3& offset : clip.skeleton.rest_offsets) offset *= factor;
   for (Eigen::Index c : position_columns) clip.motion.col(c) *= factor;

@@ -127,12 +127,15 @@ class BvhReader {
                                      (parsed == Number::malformed ? " is not a number"
                                                                   : " is not a finite number"));
         }
+        // In range both in the file's units and scaled, so a clip written back in the file's
+        // units (footlock, reach) stays in range too.
         const double scaled = is_position[count] ? value * scale_ : value;
-        if (!kBvhValueRange.contains(scaled)) {
+        const bool raw_beyond = !kBvhValueRange.contains(value);
+        if (raw_beyond || !kBvhValueRange.contains(scaled)) {
           return at(line.number, "frame " + std::to_string(f) + " value " + std::to_string(count) +
                                      " (" + channel_label(count) + ") " + quote_input(t) +
                                      " is beyond " + format_number(kBvhValueRange.max) +
-                                     (is_position[count] ? " (times the scale)" : ""));
+                                     (raw_beyond ? "" : " (times the scale)"));
         }
         values.push_back(scaled);
       }

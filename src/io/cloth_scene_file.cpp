@@ -239,6 +239,9 @@ class SceneReader {
       set_tolerance(simulation.integrator, *tolerance);
     if (auto velocity = fields.number("velocity_tolerance")) {
       auto* newton = std::get_if<NewtonSettings>(&simulation.integrator);
+      if (desc.choose_integrator) {  // the winner's own settings replace the default's
+        fields.error("velocity_tolerance", "applies to a named Newton integrator, not 'auto'");
+      }
       if (!newton) {
         fields.error("velocity_tolerance",
                      "applies to the Newton integrators (implicit-*) only, not " +

@@ -70,6 +70,15 @@ TEST(HostileInputCli, AThrownColliderBeyondTheSpeedRangeIsRefused) {
                  "linear velocity must have each coordinate between -1e+06 and 1e+06", out);
 }
 
+// --friction beside --scene was silently ignored (the scene gives the world whole).
+TEST(HostileInputCli, AWorldOptionBesideASceneIsRefused) {
+  const fs::path scene = hostile_scene("friction", R"({"ground": {}, "frames": 2})");
+  const fs::path out = scene.parent_path() / "out";
+  expect_refused(run_command(kHostileCli + " cloth --scene " + scene.string() +
+                             " --friction 0.5 --out " + out.string()),
+                 "--friction describes the cloth or its world, which --scene gives whole", out);
+}
+
 TEST(HostileInputCli, ADuplicateKeyIsRefused) {
   const fs::path scene = hostile_scene("duplicate", R"({"frames": 3, "frames": 1000000})");
   const fs::path out = scene.parent_path() / "out";
@@ -139,7 +148,7 @@ TEST(HostileInputCli, StepsShortOfTheToleranceAreWarnedAbout) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err,
             "animkit: warning: 2 of 2 steps stopped short of the tolerance (the solver's "
-            "iteration cap); metrics.json lists each step\n");
+            "iteration cap)\n");
 }
 
 // Property: random small scenes (colliders still or moving, pins, ground, self-contact, wind,

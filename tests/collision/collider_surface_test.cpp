@@ -126,10 +126,11 @@ TEST(ColliderSurface, TriangleCountsFollowTheLevel) {
 TEST(ColliderSurface, TheTriangleCountIsKnownBeforeTheSurfaceIsMade) {
   const TriangleMesh tetrahedron{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
                                  {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
-  const ColliderShape shapes[] = {SphereShape{0.3},        BoxShape{Vec3(1, 0.1, 2)},
-                                  CapsuleShape{0.2, 0.5},  CapsuleShape{0.01, 10.0},
-                                  CapsuleShape{1.0, 0.01}, PlaneShape{},
-                                  MeshShape{tetrahedron}};
+  const ColliderShape shapes[] = {SphereShape{0.3}, BoxShape{Vec3(1, 0.1, 2)},
+                                  CapsuleShape{0.2, 0.5}, CapsuleShape{0.01, 10.0},
+                                  CapsuleShape{1.0, 0.01}, PlaneShape{}, MeshShape{tetrahedron},
+                                  // long and thin enough to overflow a length / segment quotient
+                                  CapsuleShape{1e-305, 1e6}};
   for (const ColliderShape& shape : shapes) {
     for (int level = 0; level <= 4; ++level) {
       EXPECT_EQ(surface_triangle_count(shape, level),

@@ -199,12 +199,18 @@ TEST(Bvh, MalformedFilesEachGetOneClearError) {
   EXPECT_EQ(error_of(small_file("", "Frames: 1\nFrame Time: 0.1\n0 0 0 -inf 0 0\n")),
             "bad.bvh: line 10: frame 0 value 3 (Zrotation of hip) '-inf' is not a finite number");
   EXPECT_EQ(error_of(small_file("", "Frames: 1\nFrame Time: 0.1\n1e300 0 0 0 0 0\n")),
-            "bad.bvh: line 10: frame 0 value 0 (Xposition of hip) '1e300' is beyond 1e+09 "
-            "(times the scale)");
+            "bad.bvh: line 10: frame 0 value 0 (Xposition of hip) '1e300' is beyond 1e+09");
   EXPECT_EQ(error_of(small_file("", "Frames: 1\nFrame Time: 0.1\n0 0 0 0 2e9 0\n")),
             "bad.bvh: line 10: frame 0 value 4 (Xrotation of hip) '2e9' is beyond 1e+09");
   EXPECT_EQ(error_of(small_file("\tJOINT knee\n\t{\n\t\tOFFSET 0 -1e300 0\n")),
-            "bad.bvh: line 8: OFFSET of JOINT knee: '-1e300' is beyond 1e+09 (times the scale)");
+            "bad.bvh: line 8: OFFSET of JOINT knee: '-1e300' is beyond 1e+09");
+  // Within the range in the file, beyond it once scaled.
+  const auto scaled = read_bvh(small_file("", "Frames: 1\nFrame Time: 0.1\n5e8 0 0 0 0 0\n"),
+                               "bad.bvh", {.scale = 10.0});
+  ASSERT_FALSE(scaled);
+  EXPECT_EQ(scaled.error().message,
+            "bad.bvh: line 10: frame 0 value 0 (Xposition of hip) '5e8' is beyond 1e+09 (times "
+            "the scale)");
   EXPECT_EQ(error_of(small_file("", "Frames: 1\nFrame Time: 0.1\n0 0 0 1,5 0 0\n")),
             "bad.bvh: line 10: frame 0 value 3 (Zrotation of hip) '1,5' is not a number");
   EXPECT_EQ(error_of(small_file("", "Frames: 3\nFrame Time: 0.1\n0 0 0 0 0 0\n0 0 0 0 0 0\n")),

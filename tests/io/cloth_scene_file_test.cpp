@@ -188,6 +188,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{R"({"solver": {"integrator": "rk4"}})",
                  "solver.integrator: unknown integrator 'rk4' (expected auto or one of: " +
                      integrator_names() + ")"},
+        BadScene{R"({"solver": {"integrator": "auto", "velocity_tolerance": 1e-3}})",
+                 "solver.velocity_tolerance: applies to a named Newton integrator, not 'auto'"},
         BadScene{R"({"solver": {"integrator": "vbd", "velocity_tolerance": 1e-3}})",
                  "solver.velocity_tolerance: applies to the Newton integrators (implicit-*) "
                  "only, not 'vbd'"},

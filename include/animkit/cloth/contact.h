@@ -144,8 +144,9 @@ class ContactTerm final : public EnergyTerm {
   bool settled() const override;
   bool gaps_healthy(const Eigen::VectorXd& x) const override;
   /// Fails, naming the particles and the obstacle, when the cloth at x cannot start against
-  /// the obstacles where they are now: a pair closer than kMinStartGapFraction of the
-  /// thickness (the barrier is infinite at contact), or an edge of the cloth through an
+  /// the obstacles where they are now: with self-contact, a thickness above the cloth's mean
+  /// edge length (its own neighbours would repel); a pair closer than kMinStartGapFraction of
+  /// the thickness (the barrier is infinite at contact); an edge of the cloth through an
   /// obstacle's triangle, an obstacle's edge through the cloth, or, with self-contact, the
   /// cloth through itself (no barrier acts between crossing primitives, so such a start would
   /// run on crossed). IPC keeps a start that passes intersection-free.

@@ -363,14 +363,14 @@ Result<void> ContactTerm::check_start(const Eigen::VectorXd& x) const {
     if (mesh < fixed_meshes) return "obstacle mesh " + std::to_string(mesh);
     return "collider " + quote_input(m.moving.colliders()[mesh - fixed_meshes].name());
   };
-  // A thickness beyond the cloth's own edges makes neighbouring primitives of the sheet repel
-  // at rest and puts every pair within reach (a 10 m thickness on an 11 x 11 sheet took 19 s
-  // a frame).
+  // With self-contact, a thickness beyond the cloth's own edges makes neighbouring primitives
+  // of the sheet repel at rest and puts every pair within reach (a 10 m thickness on an 11 x 11
+  // sheet took 19 s a frame).
   double length = 0.0;
   for (const auto& [a, b] : m.geometry.cloth.edges)
     length += (x.segment<3>(3 * a) - x.segment<3>(3 * b)).norm();
   length /= static_cast<double>(std::max<std::size_t>(m.geometry.cloth.edges.size(), 1));
-  if (m.settings.thickness > length) {
+  if (m.settings.self_contact && m.settings.thickness > length) {
     return fail("contact thickness " + format_number(m.settings.thickness) +
                 " m is more than the cloth's mean edge length, " + format_number(length) +
                 " m: the sheet's neighbouring triangles would repel each other");

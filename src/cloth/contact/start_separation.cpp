@@ -30,10 +30,11 @@ std::string particles(const std::array<int, 3>& t) {
 }
 
 // The sign of tetrahedron (a, b, c, d)'s volume: +1, -1, or 0 where the volume is below
-// kFlat of the product of its edges from a, which is rounding's size for coplanar points (a
-// flat sheet's own edges and triangles) and far below any crossing the distances miss: a
-// segment end that close to a triangle's plane is within the minimum gap of the triangle
-// wherever the segment crosses it.
+// kFlat of the product of its edges from a, above rounding's size for coplanar points (a flat
+// sheet's own edges and triangles, which must not count as crossing). A crossing flatter than
+// that (a segment end within 1e-10 of the edge lengths of the plane, or a segment passing that
+// close to a triangle's edge) is not reported as one; at the usual scales it is also closer
+// than the minimum gap and refused as touching.
 int orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   constexpr double kFlat = 1e-10;
   const Vec3 ab = b - a, ac = c - a, ad = d - a;
