@@ -47,44 +47,42 @@ void expect_refused(const animkit::testing_support::CommandOutput& r, const std:
   EXPECT_FALSE(fs::exists(out)) << out;
 }
 
+// `animkit cloth --scene` on `json` (written by hostile_scene) with `options`, refused as above.
+void expect_scene_refused(const std::string& name, const std::string& json,
+                          const std::string& options, const std::string& part) {
+  const fs::path scene = hostile_scene(name, json);
+  const fs::path out = scene.parent_path() / "out";
+  expect_refused(run_command(kHostileCli + " cloth --scene " + scene.string() + " " + options +
+                             " --out " + out.string()),
+                 part, out);
+}
+
 // A 3 cm ball through the middle of a triangle of a 4 x 4 sheet ran, crossed, as a success.
 TEST(HostileInputCli, AClothStartingPiercedByAColliderIsRefused) {
-  const fs::path scene =
-      hostile_scene("pea", R"({"cloth": {"grid": 4, "size": 1, "height": 1, "material": "cotton"},
+  expect_scene_refused(
+      "pea", R"({"cloth": {"grid": 4, "size": 1, "height": 1, "material": "cotton"},
                  "colliders": [{"name": "pea", "radius": 0.03, "position": [0.1, 1.0001, 0.17]}],
-                 "frames": 3, "dt": 0.0333})");
-  const fs::path out = scene.parent_path() / "out";
-  expect_refused(run_command(kHostileCli + " cloth --scene " + scene.string() +
-                             " --no-picture --out " + out.string()),
-                 "collider 'pea' passes through the cloth's triangle of particles ", out);
+                 "frames": 3, "dt": 0.0333})",
+      "--no-picture", "collider 'pea' passes through the cloth's triangle of particles ");
 }
 
 TEST(HostileInputCli, AThrownColliderBeyondTheSpeedRangeIsRefused) {
-  const fs::path scene =
-      hostile_scene("fast", R"({"cloth": {"grid": 4, "size": 1, "height": 1, "material": "cotton"},
+  expect_scene_refused(
+      "fast", R"({"cloth": {"grid": 4, "size": 1, "height": 1, "material": "cotton"},
                   "colliders": [{"name": "ball", "radius": 0.1, "position": [0.5, 0.5, 0.5],
-                                 "velocity": [1e300, 0, 0]}], "frames": 3})");
-  const fs::path out = scene.parent_path() / "out";
-  expect_refused(run_command(kHostileCli + " cloth --scene " + scene.string() +
-                             " --no-picture --out " + out.string()),
-                 "linear velocity must have each coordinate between -1e+06 and 1e+06", out);
+                                 "velocity": [1e300, 0, 0]}], "frames": 3})",
+      "--no-picture", "linear velocity must have each coordinate between -1e+06 and 1e+06");
 }
 
 // --friction beside --scene was silently ignored (the scene gives the world whole).
 TEST(HostileInputCli, AWorldOptionBesideASceneIsRefused) {
-  const fs::path scene = hostile_scene("friction", R"({"ground": {}, "frames": 2})");
-  const fs::path out = scene.parent_path() / "out";
-  expect_refused(run_command(kHostileCli + " cloth --scene " + scene.string() +
-                             " --friction 0.5 --out " + out.string()),
-                 "--friction describes the cloth or its world, which --scene gives whole", out);
+  expect_scene_refused("friction", R"({"ground": {}, "frames": 2})", "--friction 0.5",
+                       "--friction describes the cloth or its world, which --scene gives whole");
 }
 
 TEST(HostileInputCli, ADuplicateKeyIsRefused) {
-  const fs::path scene = hostile_scene("duplicate", R"({"frames": 3, "frames": 1000000})");
-  const fs::path out = scene.parent_path() / "out";
-  expect_refused(run_command(kHostileCli + " cloth --scene " + scene.string() +
-                             " --no-picture --out " + out.string()),
-                 "the key 'frames' appears twice in one object", out);
+  expect_scene_refused("duplicate", R"({"frames": 3, "frames": 1000000})", "--no-picture",
+                       "the key 'frames' appears twice in one object");
 }
 
 // --integrator auto tried the bare cloth, so a world with contact failed when VBD won; a
