@@ -12,6 +12,8 @@ packages=(
   # Text drawings: FreeType and the default font, DejaVu Sans.
   libfreetype-dev fonts-dejavu-core
   libgtest-dev libgmock-dev libbenchmark-dev
+  # The glTF exporters' tests read the files back with an independent reader, tinygltf.
+  libtinygltf-dev
   # Pictures and the viewer: OpenGL through glvnd, Mesa's software renderer (llvmpipe) for EGL
   # without a display and GLX in a window, GLFW and Dear ImGui.
   libgl-dev libopengl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0 libglfw3-dev
@@ -37,6 +39,11 @@ if [ "${1:-}" = "--tests" ]; then
   # The sanitizer tree (tests under ASan + UBSan, and the fuzz targets) is built with clang 16:
   # its runtime libraries (libFuzzer, ASan, UBSan).
   packages=(blender python3-pytest python3-matplotlib clang-16 libclang-rt-16-dev)
+  # The glTF files are checked by the Khronos validator and three.js, npm packages run by
+  # Node.js (tests/gltf/): Debian's nodejs and npm when the machine has no node of its own.
+  if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+    packages+=(nodejs npm)
+  fi
 fi
 
 missing=()
@@ -45,8 +52,22 @@ for p in "${packages[@]}"; do
     missing+=("$p")
   fi
 done
+# The npm packages of the glTF checks (tests/gltf/package.json, versions pinned by its
+# package-lock.json), into tests/gltf/node_modules; nothing to do once they are there.
+install_npm_packages() {
+  [ "${1:-}" = "--tests" ] || return 0
+  local dir
+  dir="$(cd "$(dirname "$0")/../tests/gltf" && pwd)"
+  if [ -d "$dir/node_modules/gltf-validator" ] && [ -d "$dir/node_modules/three" ]; then
+    return 0
+  fi
+  echo "install-deps: installing the npm packages of tests/gltf"
+  (cd "$dir" && npm ci --no-audit --no-fund)
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages already installed"
+  install_npm_packages "${1:-}"
   exit 0
 fi
 
@@ -59,3 +80,4 @@ echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $sudo apt-get update
 $sudo apt-get install -y --no-install-recommends "${missing[@]}"
+install_npm_packages "${1:-}"

@@ -1,9 +1,6 @@
 #include "cloth_command.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -23,42 +20,19 @@
 #include "animkit/core/validation.h"
 #include "animkit/io/atomic_write.h"
 #include "animkit/io/cloth_report.h"
-#include "animkit/io/collider_export.h"
-#include "animkit/io/point_cache.h"
+#include "animkit/io/gltf_sink.h"
+#include "animkit/io/metrics_sink.h"
+#include "animkit/io/obj_sink.h"
+#include "animkit/io/point_cache_sink.h"
 #include "animkit/scene/cloth_scene.h"
 #include "animkit/scene/cloth_scenes.h"
-#include "animkit/scene/collider_drawing.h"
 #include "cli_errors.h"
+#include "cloth_picture_sink.h"
 #include "cloth_world_of.h"
+#include "progress_line.h"
 #include "run_output.h"
 
 namespace animkit::cli {
-
-namespace {
-
-// "frame 120/600, 1.23 ms/step" on one rewritten line, only when stderr is a terminal.
-class ProgressLine {
- public:
-  explicit ProgressLine(int total) : total_(total), enabled_(::isatty(::fileno(stderr)) != 0) {}
-  void update(int frame, double ms) {
-    if (!enabled_) return;
-    const auto now = std::chrono::steady_clock::now();
-    if (frame < total_ && now - last_ < std::chrono::milliseconds(200)) return;
-    last_ = now;
-    std::fprintf(stderr, "\rframe %d/%d, %.3f ms/step   ", frame, total_, ms);
-    std::fflush(stderr);
-  }
-  void done() {
-    if (enabled_) std::fprintf(stderr, "\n");
-  }
-
- private:
-  int total_;
-  bool enabled_;
-  std::chrono::steady_clock::time_point last_{};
-};
-
-}  // namespace
 
 std::string material_names() {
   std::string names;
@@ -115,19 +89,6 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
   auto world = build_cloth_world(*world_desc);
   if (!world) return report_error(world.error().message);
   ClothSimulator* sim = &world->simulator;
-  const std::vector<Collider>* colliders = &world->colliders;
-  // The colliders where the solver has them: on their paths after every converged step, short
-  // of them after a step CCD held a collider back (drawn and cached where it really is).
-  std::vector<Collider> posed = *colliders;
-  const auto solver_colliders = [&]() -> const std::vector<Collider>& {
-    for (std::size_t i = 0; world->contact && i < posed.size(); ++i)
-      posed[i].set_pose(sim->state().time, world->contact->collider_pose(i));
-    return posed;
-  };
-  const auto solver_collider_points = [&] {
-    return world->contact ? world->contact->collider_points()
-                          : collider_points(*colliders, sim->state().time);
-  };
 
   // Opened before the run, so a missing OpenGL or ffmpeg stops it before any file is written.
   PictureArgs picture_args = args.pictures;
@@ -138,96 +99,43 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
       cloth_picture_frame(*world_desc, *cloth, sim->state(), world->colliders);
   const OrbitCamera camera =
       OrbitCamera::framing(framing.focus, pictures->aspect(), kClothPictureYaw, kClothPicturePitch);
-  const double floor_height = framing.floor_height;
-  DrawList picture;
-  const auto describe_state = [&] {
-    picture.clear();
-    describe_cloth(picture, sim->model(), sim->state(), {.floor_height = floor_height});
-    describe_colliders(picture, solver_colliders());
-  };
-  if (pictures->take_video_frame()) {
-    describe_state();
-    if (auto ok = pictures->add_video_frame(picture, camera); !ok)
-      return report_error(ok.error().message);
-  }
 
-  std::optional<Pc2Writer> cache, collider_cache;
+  // The outputs, each a sink of the run: written whole at its end, or (a diverged run) only
+  // the metrics that say where it failed.
+  ClothRunInfo info = run_info(*world_desc, *sim, integrator_name, args.scene);
+  std::optional<PointCacheSink> point_cache;
+  std::optional<ObjSink> meshes;
+  std::optional<GltfSink> gltf;
+  std::optional<MetricsSink> metrics;
+  std::vector<ClothSink*> sinks;
   if (!out.empty()) {
     if (auto ok = ensure_output_directory(out); !ok) return report_error(ok.error().message);
-    auto opened = Pc2Writer::open(out / "cloth.pc2", sim->model().particle_count());
-    if (!opened) return report_error(opened.error().message);
-    cache.emplace(std::move(*opened));
-    if (auto ok = cache->add_frame(sim->state().positions); !ok)
-      return report_error(ok.error().message);
-    // Moving colliders play back beside the cloth: their surfaces, frame by frame.
-    if (any_collider_moves(*colliders)) {
-      auto opened_colliders =
-          Pc2Writer::open(out / "colliders.pc2", collider_point_count(*colliders));
-      if (!opened_colliders) return report_error(opened_colliders.error().message);
-      collider_cache.emplace(std::move(*opened_colliders));
-      if (auto ok = collider_cache->add_frame(solver_collider_points()); !ok)
-        return report_error(ok.error().message);
+    sinks.push_back(&point_cache.emplace(out));
+    sinks.push_back(&meshes.emplace(out));
+    // A run longer than a .glb holds keeps its point cache and says why it has no glTF.
+    std::optional<Error> too_long;
+    if (!args.no_gltf)
+      too_long = cloth_glb_fits(sim->model().particle_count(), world_desc->frames + 1LL);
+    if (too_long) {
+      std::fprintf(stderr, "animkit: warning: no cloth.glb: %s (cloth.pc2 holds every frame)\n",
+                   too_long->message.c_str());
+    } else if (!args.no_gltf) {
+      sinks.push_back(&gltf.emplace(out / "cloth.glb"));
     }
   }
+  ClothPictureSink picture_sink(
+      *pictures, camera, framing.floor_height,
+      pictures->wants_png() ? std::optional(out / "final.png") : std::nullopt);
+  sinks.push_back(&picture_sink);
+  if (!out.empty()) sinks.push_back(&metrics.emplace(out, info));
+  ProgressLine progress;
+  sinks.push_back(&progress);
 
-  const ClothState rest = sim->state();  // for the OBJ: the mesh as it starts
-  ProgressLine progress(world_desc->frames);
-  // Each frame: a point-cache frame, a video frame, the progress line.
-  const auto record_frame = [&](int frame, const ClothSimulator& s,
-                                const StepReport& step) -> Result<void> {
-    if (cache) {
-      if (auto ok = cache->add_frame(s.state().positions); !ok) return ok;
-    }
-    if (collider_cache) {
-      if (auto ok = collider_cache->add_frame(solver_collider_points()); !ok) return ok;
-    }
-    if (pictures->take_video_frame()) {
-      describe_state();
-      if (auto ok = pictures->add_video_frame(picture, camera); !ok) return ok;
-    }
-    progress.update(frame, step.ms);
-    return {};
-  };
-  auto run = run_cloth(*sim, world_desc->frames, dt, record_frame);
+  auto run = run_cloth(*world, world_desc->frames, dt, sinks);
   if (!run) return report_error(run.error().message);
   const std::vector<StepReport>& steps = run->steps;
   const std::optional<std::string>& divergence = run->divergence;
-  progress.done();
-
-  ClothRunInfo info = run_info(*world_desc, *sim, integrator_name, args.scene);
-  info.divergence = divergence;
-  if (cache) {
-    // A diverged run's results are its metrics (where and how it failed) and no animation:
-    // the unfinished cache is dropped with its writer.
-    if (!divergence) {
-      describe_state();
-      if (auto ok = pictures->write_png(out / "final.png", picture, camera); !ok) {
-        return report_error(ok.error().message);
-      }
-      if (auto ok = cache->finish(); !ok) return report_error(ok.error().message);
-      if (collider_cache) {
-        if (auto ok = collider_cache->finish(); !ok) return report_error(ok.error().message);
-      }
-      if (auto ok = write_file_atomic(out / "cloth.obj", cloth_obj(sim->model(), rest)); !ok) {
-        return report_error(ok.error().message);
-      }
-      // The colliders as Blender opens them beside the cloth, in their first frame's pose.
-      if (!colliders->empty()) {
-        if (auto ok = write_file_atomic(out / "colliders.obj", colliders_obj(*colliders, 0.0)); !ok)
-          return report_error(ok.error().message);
-      }
-    }
-    if (auto ok = write_file_atomic(out / "metrics.json", cloth_metrics_json(info, steps)); !ok) {
-      return report_error(ok.error().message);
-    }
-  }
-  if (!divergence) {
-    if (auto ok = pictures->finish_video(); !ok) return report_error(ok.error().message);
-  }
-  // A diverged run's unfinished caches are dropped now: their writers remove their temporaries
-  // before the folder is swapped in.
-  cache.reset();
-  collider_cache.reset();
+  // The sinks hold no temporaries now: finished, or (a diverged run) dropped.
   if (auto ok = commit(); !ok) return report_error(ok.error().message);
   if (divergence) return report_error(*divergence);
 
@@ -239,8 +147,9 @@ int run_cloth_in(const ClothArgs& args, const std::filesystem::path& out, const 
               s.newton_iterations_mean, s.linear_iterations_mean, 100.0 * s.converged_fraction,
               s.final_energy);
   if (!args.out.empty()) {
-    std::printf("wrote metrics.json, cloth.obj, cloth.pc2 (%d frames)%s to %s\n", s.frames + 1,
-                pictures->wants_png() ? ", final.png" : "", args.out.c_str());
+    std::printf("wrote metrics.json, cloth.obj, cloth.pc2 (%d frames)%s%s to %s\n", s.frames + 1,
+                gltf ? ", cloth.glb" : "", pictures->wants_png() ? ", final.png" : "",
+                args.out.c_str());
   }
   if (!args.pictures.video.empty()) std::printf("wrote %s\n", args.pictures.video.c_str());
   // Results, but not what the tolerance promised: said where it cannot be missed.
@@ -316,8 +225,11 @@ std::function<int()> add_cloth_command(CLI::App& app) {
       ->capture_default_str();
   add_world_options(*cloth, args->world);
   cloth->add_option("--out", args->out,
-                    "Folder for metrics.json, cloth.obj, cloth.pc2 and final.png (created if "
-                    "needed; replaced whole when the run ends, see the README)");
+                    "Folder for metrics.json, cloth.obj, cloth.pc2, cloth.glb and final.png "
+                    "(created if needed; replaced whole when the run ends, see the README)");
+  cloth->add_flag("--no-gltf", args->no_gltf,
+                  "No cloth.glb (glTF 2.0: the sheet and colliders with every frame, for web "
+                  "viewers, three.js, Godot, Unity and Blender) in the --out folder");
   add_picture_options(*cloth, args->pictures, "final.png");
   return [args, cloth] {
     args->gravity_given = cloth->count("--gravity") > 0;

@@ -44,6 +44,7 @@ struct ClothArgs {
     return std::find(options_given.begin(), options_given.end(), option) != options_given.end();
   }
   std::string out;  ///< empty: write no files
+  bool no_gltf = false;  ///< --no-gltf: no cloth.glb in the --out folder
   PictureArgs pictures;
 };
 

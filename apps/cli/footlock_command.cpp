@@ -13,6 +13,7 @@
 #include "animkit/io/bvh.h"
 #include "animkit/io/bvh_motion.h"
 #include "animkit/io/foot_lock_report.h"
+#include "animkit/io/skeleton_gltf.h"
 #include "animkit/kinematics/foot_lock.h"
 #include "cli_errors.h"
 #include "footlock_video.h"
@@ -78,8 +79,10 @@ int run(FootlockArgs args) {
   if (auto ok = render_foot_lock_video(*skeleton, motion, locked, *result, *pictures); !ok) {
     return report_error(ok.error().message);
   }
-  // The fixed clip goes back in the file's own units.
+  // fixed.glb in metres (glTF's unit); the fixed clip goes back in the file's own units.
   motion_to_bvh(locked, *clip);
+  if (auto ok = write_skeleton_glb_file(output->dir() / "fixed.glb", *clip, 1.0); !ok)
+    return report_error(ok.error().message);
   if (auto ok = scale_bvh_clip(*clip, 1.0 / args.scale); !ok)
     return report_error(ok.error().message);
   if (auto ok = write_bvh_file(output->dir() / "fixed.bvh", *clip); !ok) {
@@ -99,7 +102,7 @@ int run(FootlockArgs args) {
       motion.frame_count(), m.contacts[0], m.contacts[1], m.slide_before_mean_cm,
       m.slide_after_mean_cm, m.slide_before_max_cm, m.slide_after_max_cm, m.ik_error_max_cm,
       m.ms_per_frame);
-  std::printf("wrote fixed.bvh, metrics.json, compare.png to %s\n", args.out.c_str());
+  std::printf("wrote fixed.bvh, fixed.glb, metrics.json, compare.png to %s\n", args.out.c_str());
   if (!args.video.empty()) std::printf("wrote %s\n", args.video.c_str());
   return 0;
 }
@@ -112,12 +115,13 @@ std::function<int()> add_footlock_command(CLI::App& app) {
       "footlock",
       "Finds where each foot of a BVH walk is planted, pins it there with leg IK (knees "
       "forward, within a flexion range), blends in and out of each contact, and writes "
-      "fixed.bvh, metrics.json and compare.png to --out.");
+      "fixed.bvh, fixed.glb (glTF 2.0, in metres), metrics.json and compare.png to --out.");
   cmd->add_option("--in", args->in, "The BVH clip (legs named Left/RightHip, Knee, Ankle)")
       ->required();
-  cmd->add_option("--out", args->out,
-                  "Folder for fixed.bvh, metrics.json and compare.png (created if needed; "
-                  "replaced whole when the run ends)")
+  cmd->add_option(
+         "--out", args->out,
+         "Folder for fixed.bvh, fixed.glb, metrics.json and compare.png (created if needed; "
+         "replaced whole when the run ends)")
       ->required();
   cmd->add_option("--video", args->video,
                   "Also render the walk before (orange lines) and after (blue bones) to this "

@@ -16,6 +16,7 @@
 #include "animkit/io/bvh_motion.h"
 #include "animkit/io/joint_limits_file.h"
 #include "animkit/io/reach_report.h"
+#include "animkit/io/skeleton_gltf.h"
 #include "animkit/kinematics/foot_lock.h"
 #include "animkit/kinematics/hand_reach.h"
 #include "animkit/kinematics/human_limits.h"
@@ -118,10 +119,13 @@ int run(ReachArgs args) {
   const auto result = reach_hand(*skeleton, limits, hand, feet, target, args.settings, pose);
   if (!result) return report_error(args.in + ": " + result.error().message);
 
-  // reached.bvh: the one reached frame, in the file's own units (a still pose to open anywhere).
+  // reached.bvh: the one reached frame, in the file's own units (a still pose to open anywhere);
+  // reached.glb: the same pose in metres, with a figure, for glTF viewers.
   BvhClip reached = *clip;
   bvh_pose_to_frame(pose, reached, args.frame);
   reached.motion = Eigen::MatrixXd(reached.motion.row(args.frame));
+  if (auto ok = write_skeleton_glb_file(output->dir() / "reached.glb", reached, 1.0); !ok)
+    return report_error(ok.error().message);
   if (auto ok = scale_bvh_clip(reached, 1.0 / args.scale); !ok)
     return report_error(ok.error().message);
   if (auto ok = write_bvh_file(output->dir() / "reached.bvh", reached); !ok) {
@@ -152,7 +156,7 @@ int run(ReachArgs args) {
         "wrote the closest pose\n",
         100.0 * r.hand_error);
   }
-  std::printf("wrote reached.bvh, metrics.json, reach.png to %s\n", args.out.c_str());
+  std::printf("wrote reached.bvh, reached.glb, metrics.json, reach.png to %s\n", args.out.c_str());
   return 0;
 }
 
@@ -163,7 +167,8 @@ std::function<int()> add_reach_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "reach",
       "A BVH character, at one frame, reaches a hand to a target while both feet stay planted "
-      "(root held, joints within limits); writes reached.bvh, metrics.json and reach.png to "
+      "(root held, joints within limits); writes reached.bvh, reached.glb, metrics.json and "
+      "reach.png to "
       "--out.");
   cmd->add_option("--in", args->in, "The BVH clip (legs named Left/RightHip, Knee, Ankle)")
       ->required();

@@ -33,10 +33,27 @@ ClothRunSummary summarize(std::span<const StepReport> steps) {
   return s;
 }
 
-Result<ClothRun> run_cloth(ClothSimulator& sim, int frames, double dt,
-                           const ClothFrameCallback& on_frame) {
+Result<void> CallbackSink::frame(const ClothFrame& frame) {
+  if (!on_frame_) return {};
+  return on_frame_(frame.frame, frame.simulator, *frame.step);
+}
+
+namespace {
+
+// The loop over any simulator; `pose_colliders` moves `posed` to where the solver has the
+// colliders after each step.
+template <typename PoseColliders>
+Result<ClothRun> run_with_sinks(ClothSimulator& sim, int frames, double dt,
+                                std::span<ClothSink* const> sinks, std::vector<Collider>& posed,
+                                const PoseColliders& pose_colliders) {
   ClothRun run;
   run.steps.reserve(static_cast<std::size_t>(std::max(frames, 0)));
+  pose_colliders();
+  ClothFrame start{.frame = 0, .simulator = sim, .colliders = posed};
+  for (ClothSink* sink : sinks) {
+    if (auto ok = sink->begin(start, frames, dt); !ok) return fail(ok.error().message);
+  }
+  int reached = 0;
   for (int frame = 1; frame <= frames; ++frame) {
     auto report = sim.step(dt);
     if (!report) {
@@ -44,11 +61,53 @@ Result<ClothRun> run_cloth(ClothSimulator& sim, int frames, double dt,
       break;
     }
     run.steps.push_back(std::move(*report));
-    if (on_frame) {
-      if (auto ok = on_frame(frame, sim, run.steps.back()); !ok) return fail(ok.error().message);
+    reached = frame;
+    pose_colliders();
+    const ClothFrame now{
+        .frame = frame, .simulator = sim, .colliders = posed, .step = &run.steps.back()};
+    for (ClothSink* sink : sinks) {
+      if (auto ok = sink->frame(now); !ok) return fail(ok.error().message);
     }
   }
+  const ClothFrame last{.frame = reached,
+                        .simulator = sim,
+                        .colliders = posed,
+                        .step = run.steps.empty() ? nullptr : &run.steps.back()};
+  for (ClothSink* sink : sinks) {
+    if (auto ok = sink->finish(run, last); !ok) return fail(ok.error().message);
+  }
   return run;
+}
+
+}  // namespace
+
+Result<ClothRun> run_cloth(ClothWorld& world, int frames, double dt,
+                           std::span<ClothSink* const> sinks) {
+  std::vector<Collider> posed = world.colliders;
+  const auto pose_colliders = [&] {
+    const double t = world.simulator.state().time;
+    for (std::size_t i = 0; i < posed.size(); ++i) {
+      if (world.contact) {
+        posed[i].set_pose(t, world.contact->collider_pose(i));
+      } else {
+        posed[i].set_time(t);
+      }
+    }
+  };
+  return run_with_sinks(world.simulator, frames, dt, sinks, posed, pose_colliders);
+}
+
+Result<ClothRun> run_cloth(ClothSimulator& sim, int frames, double dt,
+                           std::span<ClothSink* const> sinks) {
+  std::vector<Collider> none;
+  return run_with_sinks(sim, frames, dt, sinks, none, [] {});
+}
+
+Result<ClothRun> run_cloth(ClothSimulator& sim, int frames, double dt,
+                           const ClothFrameCallback& on_frame) {
+  CallbackSink sink(on_frame);
+  ClothSink* const sinks[] = {&sink};
+  return run_cloth(sim, frames, dt, sinks);
 }
 
 }  // namespace animkit

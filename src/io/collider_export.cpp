@@ -5,7 +5,7 @@
 
 namespace animkit {
 
-std::string colliders_obj(const std::vector<Collider>& colliders, double t) {
+std::string colliders_obj(std::span<const Collider> colliders, double t) {
   std::ostringstream obj;
   obj.precision(9);
   obj << "# animkit colliders at t = " << t << " s: " << colliders.size()
@@ -25,24 +25,36 @@ std::string colliders_obj(const std::vector<Collider>& colliders, double t) {
   return obj.str();
 }
 
-int collider_point_count(const std::vector<Collider>& colliders) {
+int collider_point_count(std::span<const Collider> colliders) {
   std::size_t count = 0;
   for (const Collider& c : colliders) count += c.model().surface.vertices.size();
   return static_cast<int>(count);
 }
 
-bool any_collider_moves(const std::vector<Collider>& colliders) {
+bool any_collider_moves(std::span<const Collider> colliders) {
   return std::any_of(colliders.begin(), colliders.end(),
                      [](const Collider& c) { return moves(c.model().desc.motion); });
 }
 
-Eigen::VectorXd collider_points(const std::vector<Collider>& colliders, double t) {
+Eigen::VectorXd collider_points(std::span<const Collider> colliders, double t) {
   Eigen::VectorXd points(3 * static_cast<Eigen::Index>(collider_point_count(colliders)));
   std::vector<Vec3> world;
   Eigen::Index next = 0;
   for (const Collider& c : colliders) {
     c.world_vertices_at(t, world);
     for (const Vec3& p : world) {
+      points.segment<3>(next) = p;
+      next += 3;
+    }
+  }
+  return points;
+}
+
+Eigen::VectorXd posed_collider_points(std::span<const Collider> colliders) {
+  Eigen::VectorXd points(3 * static_cast<Eigen::Index>(collider_point_count(colliders)));
+  Eigen::Index next = 0;
+  for (const Collider& c : colliders) {
+    for (const Vec3& p : c.world_vertices()) {
       points.segment<3>(next) = p;
       next += 3;
     }

@@ -40,7 +40,7 @@ void describe_surface(DrawList& out, const ColliderModel& model, const std::vect
 
 }  // namespace
 
-void describe_colliders(DrawList& out, const std::vector<Collider>& colliders, double t,
+void describe_colliders(DrawList& out, std::span<const Collider> colliders, double t,
                         const ColliderStyle& style) {
   std::vector<Vec3> world;
   for (const Collider& c : colliders) {
@@ -51,7 +51,7 @@ void describe_colliders(DrawList& out, const std::vector<Collider>& colliders, d
   }
 }
 
-void describe_colliders(DrawList& out, const std::vector<Collider>& colliders,
+void describe_colliders(DrawList& out, std::span<const Collider> colliders,
                         const ColliderStyle& style) {
   for (const Collider& c : colliders) {
     if (c.is_half_space() && !style.planes) continue;

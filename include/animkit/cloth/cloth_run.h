@@ -1,7 +1,7 @@
 #pragma once
-// A cloth run: the per-frame loop every shell shares (step, record, stop on divergence, hand
-// each frame to the caller), and the aggregate numbers of a run (the summary the CLI writes
-// and the README quotes).
+// A cloth run: the per-frame loop every shell shares (step, stop on divergence, hand each frame
+// to the sinks: the output formats, a progress line, a caller's function), and the aggregate
+// numbers of a run (the summary the CLI writes and the README quotes).
 #include <functional>
 #include <optional>
 #include <span>
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "animkit/cloth/cloth_simulator.h"
+#include "animkit/cloth/cloth_world.h"
 #include "animkit/cloth/step_report.h"
 #include "animkit/core/result.h"
 
@@ -35,14 +36,64 @@ struct ClothRun {
   std::optional<std::string> divergence;
 };
 
+/// One frame as the sinks see it: frame 0 is the state the run starts from, frame k the state
+/// after k steps (at time start + k dt).
+struct ClothFrame {
+  int frame = 0;
+  const ClothSimulator& simulator;
+  /// The colliders where the solver has them: on their paths after every converged step, short
+  /// of them after a step CCD held one back (what is drawn and cached is where it really is).
+  std::span<const Collider> colliders;
+  const StepReport* step = nullptr;  ///< the step that led here; null for frame 0
+};
+
+/// Receives a run frame by frame: an output format (point cache, OBJ, metrics, glTF, pictures),
+/// a progress line, a test's recorder. Each output file is written whole or not at all: a sink
+/// keeps what it writes in a temporary until finish() of a run that did not diverge (metrics,
+/// which say how a run failed, excepted), and a sink destroyed before that removes it.
+class ClothSink {
+ public:
+  virtual ~ClothSink() = default;
+  /// Before the first step: the start (frame 0) and what follows (at most `frames` steps of
+  /// `dt` seconds). An error stops the run before it starts.
+  virtual Result<void> begin(const ClothFrame& start, int frames, double dt) = 0;
+  /// After every step. An error stops the run.
+  virtual Result<void> frame(const ClothFrame& frame) = 0;
+  /// After the last step, with every report and, for a diverged run, its message; `last` is
+  /// the last frame reached (the state before the step that diverged).
+  virtual Result<void> finish(const ClothRun& run, const ClothFrame& last) = 0;
+};
+
 /// Called after every step with the frame number (1-based), the simulator in its new state and
 /// the step's report (to write a cache frame, draw a picture, update a progress line). An
 /// error stops the run.
 using ClothFrameCallback =
     std::function<Result<void>(int frame, const ClothSimulator& sim, const StepReport& step)>;
 
-/// Advances `sim` by `frames` steps of dt seconds. A diverged step ends the run (its message in
-/// ClothRun::divergence, not an error); a failing callback ends it with the callback's error.
+/// A callable as a sink: frame() calls it; begin() and finish() do nothing.
+class CallbackSink final : public ClothSink {
+ public:
+  explicit CallbackSink(ClothFrameCallback on_frame) : on_frame_(std::move(on_frame)) {}
+  Result<void> begin(const ClothFrame&, int, double) override { return {}; }
+  Result<void> frame(const ClothFrame& frame) override;
+  Result<void> finish(const ClothRun&, const ClothFrame&) override { return {}; }
+
+ private:
+  ClothFrameCallback on_frame_;
+};
+
+/// Advances the world's simulator by `frames` steps of dt seconds, handing the start, every
+/// step and the end to each sink in order. A diverged step ends the run (its message in
+/// ClothRun::divergence, not an error; the sinks still finish); a failing sink ends it with
+/// that sink's error, and the sinks are not finished (their temporaries go with them).
+Result<ClothRun> run_cloth(ClothWorld& world, int frames, double dt,
+                           std::span<ClothSink* const> sinks);
+
+/// The same for a simulator without colliders.
+Result<ClothRun> run_cloth(ClothSimulator& sim, int frames, double dt,
+                           std::span<ClothSink* const> sinks);
+
+/// The same with one callable as the only sink (or none).
 Result<ClothRun> run_cloth(ClothSimulator& sim, int frames, double dt,
                            const ClothFrameCallback& on_frame = {});
 

@@ -2,6 +2,7 @@
 // Colliders in a picture: each surface as lit triangles in its pose at a given time or as it
 // stands, and the contacts the cloth makes. Shared by the scenes the viewer shows and the
 // CLI's pictures.
+#include <span>
 #include <vector>
 
 #include "animkit/cloth/contact.h"
@@ -18,11 +19,11 @@ struct ColliderStyle {
 /// Appends every collider's surface at time t (s), world space, as lit triangles. Spheres and
 /// capsules are smooth-shaded with their analytic normals; boxes, planes and meshes flat, so
 /// their edges stay sharp.
-void describe_colliders(DrawList& out, const std::vector<Collider>& colliders, double t,
+void describe_colliders(DrawList& out, std::span<const Collider> colliders, double t,
                         const ColliderStyle& style = {});
 /// The same with each collider as it stands (its current pose and world vertices), however it
 /// got there (its motion, or moved by the user).
-void describe_colliders(DrawList& out, const std::vector<Collider>& colliders,
+void describe_colliders(DrawList& out, std::span<const Collider> colliders,
                         const ColliderStyle& style = {});
 
 /// Appends each contact's closest points, the cloth's (palette::contact) and the other side's
