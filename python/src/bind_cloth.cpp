@@ -222,6 +222,7 @@ void bind_cloth(py::module_& m) {
   bind_colliders(m);
   bind_integrators(m);
   bind_scenes(m);
+  bind_cloth_sinks(m);
   bind_cloth_simulator(m);
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "animkit/cloth/cloth_run.h"
 #include "animkit/cloth/cloth_world.h"
 #include "animkit/cloth/integrator_choice.h"
 #include "animkit/cloth/integrator_registry.h"
@@ -91,6 +92,60 @@ Eigen::VectorXd particle_vectors(const SimulatorObject& s, const py::handle& val
   }
   return flat(points);
 }
+
+// A run's Python side, the last of its sinks: after each step it publishes the step (for other
+// threads), lets go of the simulator's mutex, and with the GIL calls the Python callables
+// (callback(frame, report); False stops the run) and checks for Ctrl-C. A Python exception is
+// kept for rethrow() once the run is back under the GIL.
+class PythonFrames final : public ClothSink {
+ public:
+  PythonFrames(SimulatorObject& s, std::unique_lock<std::mutex>& lock,
+               std::vector<py::object> callables)
+      : s_(s), lock_(lock), callables_(std::move(callables)) {}
+
+  Result<void> begin(const ClothFrame&, int, double) override { return {}; }
+  Result<void> frame(const ClothFrame& frame) override {
+    s_.publish();
+    reports_.push_back(*frame.step);
+    lock_.unlock();
+    {
+      py::gil_scoped_acquire gil;
+      try {
+        for (const py::object& callable : callables_) {
+          const py::object keep_going = callable(frame.frame, reports_.back());
+          if (keep_going.is(py::bool_(false))) stopped_ = true;
+        }
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      } catch (py::error_already_set& e) {
+        error_.emplace(std::move(e));
+        stopped_ = true;
+      }
+    }
+    lock_.lock();
+    if (stopped_) return fail("stopped");
+    return {};
+  }
+  Result<void> finish(const ClothRun&, const ClothFrame&) override { return {}; }
+
+  bool stopped() const { return stopped_; }
+  std::vector<StepReport>& reports() { return reports_; }
+  /// Raises the callables' exception (or Ctrl-C's), if one stopped the run. Needs the GIL.
+  void rethrow() {
+    if (error_) {
+      py::error_already_set e = std::move(*error_);
+      error_.reset();
+      throw e;
+    }
+  }
+
+ private:
+  SimulatorObject& s_;
+  std::unique_lock<std::mutex>& lock_;
+  std::vector<py::object> callables_;
+  std::vector<StepReport> reports_;
+  std::optional<py::error_already_set> error_;
+  bool stopped_ = false;
+};
 
 std::unique_ptr<SimulatorObject> make_simulator(const ClothWorldDesc& scene) {
   auto object = std::make_unique<SimulatorObject>();
@@ -258,50 +313,56 @@ void bind_cloth_simulator(py::module_& m) {
           py::arg("dt") = py::none())
       .def(
           "run",
-          [](SimulatorObject& s, std::optional<int> frames, py::object callback) {
+          [](SimulatorObject& s, std::optional<int> frames, py::object callback,
+             const py::iterable& sinks) {
             const int n = frames.value_or(s.desc.frames);
             if (n < 1 || n > kMaxWorldFrames) {
               raise("frames must be between 1 and " + std::to_string(kMaxWorldFrames) + ", got " +
                     std::to_string(n));
             }
-            const double dt = s.desc.time_step;
-            std::vector<StepReport> reports;
-            // Grown as the steps come: a long run may stop early (divergence, the callback,
-            // Ctrl-C), so reserve only a bounded start.
-            constexpr int kReserveCap = 1024;
-            reports.reserve(static_cast<std::size_t>(std::min(n, kReserveCap)));
-            std::optional<Error> problem;
-            // Each step without the GIL; between steps, with it: the callback, and Ctrl-C
-            // (a pending KeyboardInterrupt stops the run after the step it arrived in).
-            for (int frame = 1; frame <= n; ++frame) {
-              std::optional<Result<StepReport>> step;
-              {
-                py::gil_scoped_release release;
-                std::lock_guard lock(s.mutex);
-                step.emplace(s.sim().step(dt));
-                s.publish();
+            std::vector<py::object> callables;
+            if (!callback.is_none()) callables.push_back(callback);
+            std::vector<ClothSink*> all;
+            for (py::handle item : sinks) {
+              if (py::isinstance<ClothSink>(item)) {
+                all.push_back(item.cast<ClothSink*>());  // `sinks` keeps it alive
+              } else if (PyCallable_Check(item.ptr()) != 0) {
+                callables.push_back(py::reinterpret_borrow<py::object>(item));
+              } else {
+                raise(
+                    "sinks must be animkit sinks (PointCacheSink, ObjSink, GltfSink) or "
+                    "callables, got " +
+                    std::string(py::str(item.get_type().attr("__name__"))));
               }
-              if (!*step) {
-                problem = step->error();
-                break;
-              }
-              reports.push_back(std::move(**step));
-              if (!callback.is_none()) {
-                const py::object keep_going = callback(frame, reports.back());
-                if (keep_going.is(py::bool_(false))) break;
-              }
-              if (PyErr_CheckSignals() != 0) throw py::error_already_set();
             }
-            if (problem) raise(*problem);
-            return reports;
+            std::unique_lock lock(s.mutex, std::defer_lock);
+            PythonFrames python(s, lock, std::move(callables));
+            all.push_back(&python);
+            Result<ClothRun> run = fail("not run");
+            {
+              // Each step without the GIL and with the simulator's mutex; between steps the
+              // other way round (PythonFrames).
+              py::gil_scoped_release release;
+              lock.lock();
+              run = run_cloth(*s.world, n, s.desc.time_step, all);
+              lock.unlock();
+            }
+            python.rethrow();
+            if (python.stopped()) return python.reports();
+            if (!run) raise(run.error());
+            if (run->divergence) raise(*run->divergence);
+            return std::move(run->steps);
           },
           "Takes `frames` steps of the scene's dt (None: the scene's frames) and returns their "
           "StepReports. callback(frame, report), if given, is called after each step (frame "
-          "counts from 1) with the GIL held; returning False stops the run. Each step runs "
-          "without the GIL. Raises animkit.Error when a step diverges (that step is undone: the "
-          "state is the last good one); Ctrl-C (KeyboardInterrupt) stops it after the current "
-          "step.",
-          py::arg("frames") = py::none(), py::arg("callback") = py::none())
+          "counts from 1) with the GIL held; returning False stops the run. sinks: outputs "
+          "written frame by frame (PointCacheSink, ObjSink, GltfSink; their files are whole "
+          "when the run ends without diverging or being stopped, else absent) and more "
+          "callables like callback. Each step runs without the GIL. Raises animkit.Error when "
+          "a step diverges (that step is undone: the state is the last good one); Ctrl-C "
+          "(KeyboardInterrupt) stops it after the current step.",
+          py::arg("frames") = py::none(), py::arg("callback") = py::none(),
+          py::arg("sinks") = py::tuple())
       .def(
           "energy",
           [](const SimulatorObject& s) {

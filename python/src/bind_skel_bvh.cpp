@@ -10,6 +10,7 @@
 #include "animkit/core/validation.h"
 #include "animkit/io/bvh.h"
 #include "animkit/io/bvh_motion.h"
+#include "animkit/io/skeleton_gltf.h"
 #include "python_errors.h"
 #include "skel_bindings.h"
 
@@ -153,6 +154,17 @@ void bind_skel_bvh(py::module_& m) {
       py::arg("path"), py::arg("clip"),
       "Writes the clip as a BVH file, whole or not at all. Raises animkit.Error naming the "
       "path when the clip is invalid or the file cannot be written.");
+  m.def(
+      "write_glb",
+      [](const std::filesystem::path& path, const BvhClip& clip, double metres_per_unit) {
+        py::gil_scoped_release release;
+        unwrap(write_skeleton_glb_file(path, clip, metres_per_unit));
+      },
+      py::arg("path"), py::arg("clip"), py::arg("metres_per_unit") = 1.0,
+      "Writes the clip as glTF 2.0 (.glb): every joint a node with its motion, and a simple "
+      "skinned figure, in metres with +Y up. metres_per_unit converts the clip's units (1 for "
+      "a clip read with read_bvh(path, scale) in metres; 0.056444 for a CMU file read at "
+      "scale 1). Whole or not at all; raises animkit.Error naming the path.");
 }
 
 }  // namespace animkit::python

@@ -65,6 +65,9 @@ std::string enum_name(E value, const Named<E> (&names)[N]) {
   return "?";
 }
 
+// bind_cloth_sinks.cpp: ClothSink, PointCacheSink, ObjSink, GltfSink.
+void bind_cloth_sinks(py::module_& m);
+
 // bind_cloth_sheets.cpp: Material, GridCloth, MeshCloth.
 void bind_sheets(py::module_& m);
 std::string repr_grid(const GridClothOptions& g);

@@ -64,14 +64,15 @@ Pc2Writer::Pc2Writer(Pc2Writer&& other) noexcept
 // Never finished: the AtomicFile's destructor removes the temporary.
 Pc2Writer::~Pc2Writer() = default;
 
-Result<Pc2Writer> Pc2Writer::open(const std::filesystem::path& path, int points) {
+Result<Pc2Writer> Pc2Writer::open(const std::filesystem::path& path, int points,
+                                  float start_frame) {
   auto file = AtomicFile::create(path);
   if (!file) return fail(file.error().message);
   Pc2Header header{};
   std::memcpy(header.signature, kSignature, sizeof kSignature);
   header.version = 1;
   header.points = points;
-  header.start_frame = 0.0f;
+  header.start_frame = start_frame;
   header.sample_rate = 1.0f;
   header.samples = 0;  // patched by finish()
   if (std::fwrite(&header, sizeof header, 1, file->stream()) != 1) {

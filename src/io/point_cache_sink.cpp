@@ -5,11 +5,16 @@
 namespace animkit {
 
 Result<void> PointCacheSink::begin(const ClothFrame& start, int, double) {
-  auto cloth = Pc2Writer::open(dir_ / "cloth.pc2", start.simulator.model().particle_count());
+  cloth_.reset();  // a sink may serve one run after another
+  colliders_.reset();
+  auto cloth = Pc2Writer::open(dir_ / options_.cloth_file, start.simulator.model().particle_count(),
+                               options_.start_frame);
   if (!cloth) return fail(cloth.error().message);
   cloth_.emplace(std::move(*cloth));
-  if (any_collider_moves(start.colliders)) {
-    auto colliders = Pc2Writer::open(dir_ / "colliders.pc2", collider_point_count(start.colliders));
+  transformed_ = !options_.transform.matrix().isIdentity(0.0);
+  if (options_.colliders && any_collider_moves(start.colliders)) {
+    auto colliders = Pc2Writer::open(dir_ / "colliders.pc2", collider_point_count(start.colliders),
+                                     options_.start_frame);
     if (!colliders) return fail(colliders.error().message);
     colliders_.emplace(std::move(*colliders));
   }
@@ -21,7 +26,13 @@ Result<void> PointCacheSink::frame(const ClothFrame& frame) {
 }
 
 Result<void> PointCacheSink::add(const ClothFrame& frame) {
-  if (auto ok = cloth_->add_frame(frame.simulator.state().positions); !ok) return ok;
+  const Eigen::VectorXd& x = frame.simulator.state().positions;
+  if (transformed_) {
+    positions_.resize(x.size());
+    for (Eigen::Index i = 0; i < x.size(); i += 3)
+      positions_.segment<3>(i) = options_.transform * Vec3(x.segment<3>(i));
+  }
+  if (auto ok = cloth_->add_frame(transformed_ ? positions_ : x); !ok) return ok;
   if (colliders_) return colliders_->add_frame(posed_collider_points(frame.colliders));
   return {};
 }

@@ -27,7 +27,10 @@ std::string cloth_obj(const ClothModel& model, const ClothState& state);
 /// is written whole or not at all: a writer destroyed before finish() removes its temporary.
 class Pc2Writer {
  public:
-  static Result<Pc2Writer> open(const std::filesystem::path& path, int points);
+  /// `start_frame`: the header's first frame (where Blender's Mesh Cache modifier, given the
+  /// same frame_start, shows the first sample).
+  static Result<Pc2Writer> open(const std::filesystem::path& path, int points,
+                                float start_frame = 0.0f);
   Pc2Writer(Pc2Writer&& other) noexcept;
   Pc2Writer& operator=(Pc2Writer&&) = delete;
   ~Pc2Writer();

@@ -1,7 +1,7 @@
 """Writing a simulated sequence of vertex positions onto a mesh object: as shape keys (one per
-frame, keyed so that only the current frame's key is on) or as a point cache (a .pc2 file read
-by a Mesh Cache modifier). Positions here are in the object's local space, Blender axes."""
-import os
+frame, keyed so that only the current frame's key is on) or as a point cache (a .pc2 file the
+library's PointCacheSink writes, read by a Mesh Cache modifier). Positions here are in the
+object's local space, Blender axes."""
 import struct
 
 import numpy as np
@@ -73,23 +73,6 @@ def bake_shape_keys(obj, first_frame, frames):
 def _new_action(name):
     import bpy  # only here, so the rest of the module imports outside Blender
     return bpy.data.actions.new(name)
-
-
-def write_pc2(path, first_frame, frames):
-    """Writes frames (count, n, 3) as a PC2 point cache: the header 'POINTCACHE2\\0', version 1,
-    point count, start frame, sample rate (1 frame), sample count, then float32 x, y, z per
-    point per sample. Written to a temporary name and renamed, so a reader never sees half."""
-    data = np.ascontiguousarray(frames, dtype="<f4")
-    if data.ndim != 3 or data.shape[2] != 3:
-        raise ValueError(f"point cache frames must be (count, points, 3), got {data.shape}")
-    header = struct.pack("<12siiffi", b"POINTCACHE2\0", 1, data.shape[1], float(first_frame),
-                         1.0, data.shape[0])
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    temporary = f"{path}.tmp"
-    with open(temporary, "wb") as out:
-        out.write(header)
-        out.write(data.tobytes())
-    os.replace(temporary, path)
 
 
 def read_pc2(path):

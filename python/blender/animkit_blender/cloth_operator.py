@@ -180,27 +180,39 @@ def simulate(context, cloth_obj, collider_objs, options, report=None):
     substeps = get("substeps") or max(1, math.ceil(frame_dt / AUTO_MAX_STEP - 1e-9))
     step_dt = frame_dt / substeps
     frame_count = last - first + 1
-    scene_desc = animkit.ClothScene(cloth=cloth, colliders=built, ground=ground, dt=step_dt,
-                                    frames=(frame_count - 1) * substeps)
+    # One simulator step a Blender frame, cut into substeps by the integrator: every step the
+    # run hands its sinks is a frame to keep.
+    scene_desc = animkit.ClothScene(cloth=cloth, colliders=built, ground=ground, dt=frame_dt,
+                                    substeps=substeps, frames=frame_count - 1)
     simulator = animkit.ClothSimulator(scene_desc)
 
+    # animkit's world (Y up) into the object's local space with Blender's axes.
     inverse = np.linalg.inv(np.array(cloth_obj.matrix_world, dtype=np.float64))
-    frames = np.empty((frame_count, len(world), 3), dtype=np.float64)
-    frames[0] = world
+    to_local = np.eye(4)
+    to_local[:3, :3] = inverse[:3, :3] @ axes.ANIMKIT_TO_BLENDER
+    to_local[:3, 3] = inverse[:3, 3]
     wm = context.window_manager
+    sinks = [lambda frame, report: wm.progress_update(frame)]
+    if bake_mode == "SHAPE_KEYS":
+        local = np.empty((frame_count, len(world), 3), dtype=np.float64)
+        local[0] = world @ inverse[:3, :3].T + inverse[:3, 3]
+
+        def keep(frame, report):
+            local[frame] = np.asarray(simulator.positions) @ to_local[:3, :3].T + to_local[:3, 3]
+        sinks.append(keep)
+    else:
+        path = cache_path(cloth_obj, get("cache_dir"))
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        # The library's point cache, written whole when the run ends (or not at all).
+        sinks.append(animkit.PointCacheSink(os.path.dirname(path), file=os.path.basename(path),
+                                            colliders=False, transform=to_local,
+                                            start_frame=first))
     wm.progress_begin(0, frame_count)
     try:
-        for k in range(1, frame_count):
-            for _ in range(substeps):
-                simulator.step()
-            frames[k] = axes.points_to_blender(np.array(simulator.positions))
-            wm.progress_update(k)
+        simulator.run(sinks=sinks)
     finally:
         wm.progress_end()
     simulated = time.perf_counter()
-    if not np.all(np.isfinite(frames)):
-        raise ClothSetupError("the simulation produced non-finite positions")
-    local = frames @ inverse[:3, :3].T + inverse[:3, 3]
 
     stats = {"frames": frame_count, "substeps": substeps, "dt": step_dt,
              "vertices": len(world), "triangles": len(tris), "pins": len(pins),
@@ -209,8 +221,6 @@ def simulate(context, cloth_obj, collider_objs, options, report=None):
         bake.bake_shape_keys(cloth_obj, first, local)
         stats["keys"] = frame_count
     else:
-        path = cache_path(cloth_obj, get("cache_dir"))
-        bake.write_pc2(path, first, local)
         bake.add_cache_modifier(cloth_obj, bpy.path.relpath(path) if bpy.data.filepath else path,
                                 first)
         stats["cache"] = path
