@@ -7,6 +7,7 @@
 #include <string>
 
 #include "animkit/io/temporary_files.h"
+#include "batch_command.h"
 #include "cli_errors.h"
 #include "cloth_command.h"
 #include "cloth_study_command.h"
@@ -43,6 +44,7 @@ int run(CLI::App& app, int argc, char** argv) {
   const auto run_footlock = animkit::cli::add_footlock_command(app);
   const auto run_reach = animkit::cli::add_reach_command(app);
   const auto run_scenes = animkit::cli::add_scenes_command(app);
+  const auto run_batch = animkit::cli::add_batch_command(app);
 
   try {
     app.parse(argc, argv);
@@ -62,6 +64,7 @@ int run(CLI::App& app, int argc, char** argv) {
     if (app.got_subcommand("footlock")) return run_footlock();
     if (app.got_subcommand("reach")) return run_reach();
     if (app.got_subcommand("scenes")) return run_scenes();
+    if (app.got_subcommand("batch")) return run_batch();
     return run_demo();
   } catch (const std::bad_alloc&) {  // one line that says what ran out, never a crash
     return animkit::cli::report_error(
