@@ -36,9 +36,11 @@ if [ "${1:-}" = "--tests" ]; then
   # The tests only: Blender (Debian's 3.4, the version the README's Blender steps use) opens the
   # BVH files animkit writes and compares them with what animkit computed, and runs the add-on
   # headless; pytest runs the Python module's tests, matplotlib the examples' plots.
+  # Dask (python3-distributed) runs the parameter sweep example on a local cluster.
   # The sanitizer tree (tests under ASan + UBSan, and the fuzz targets) is built with clang 16:
   # its runtime libraries (libFuzzer, ASan, UBSan).
-  packages=(blender python3-pytest python3-matplotlib clang-16 libclang-rt-16-dev)
+  packages=(blender python3-pytest python3-matplotlib clang-16 libclang-rt-16-dev
+            python3-distributed)
   # The glTF files are checked by the Khronos validator and three.js, npm packages run by
   # Node.js (tests/gltf/): Debian's nodejs and npm when the machine has no node of its own.
   if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
