@@ -103,6 +103,10 @@ int run(FootlockArgs args) {
       m.slide_after_mean_cm, m.slide_before_max_cm, m.slide_after_max_cm, m.ik_error_max_cm,
       m.ms_per_frame);
   std::printf("wrote fixed.bvh, fixed.glb, metrics.json, compare.png to %s\n", args.out.c_str());
+  std::printf(
+      "fixed.glb is in metres (the file's units x %g), +Y up; fixed.bvh in the file's "
+      "units\n",
+      args.scale);
   if (!args.video.empty()) std::printf("wrote %s\n", args.video.c_str());
   return 0;
 }

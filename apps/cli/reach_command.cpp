@@ -157,6 +157,10 @@ int run(ReachArgs args) {
         100.0 * r.hand_error);
   }
   std::printf("wrote reached.bvh, reached.glb, metrics.json, reach.png to %s\n", args.out.c_str());
+  std::printf(
+      "reached.glb is in metres (the file's units x %g), +Y up; reached.bvh in the file's "
+      "units\n",
+      args.scale);
   return 0;
 }
 

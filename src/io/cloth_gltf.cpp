@@ -120,7 +120,7 @@ Result<std::string> cloth_glb(const ClothAnimation& a) {
 
   GlbBuilder glb("animkit");
   Json& doc = glb.document();
-  doc["materials"] = {gltf_material("cloth", {0.8, 0.35, 0.25, 1.0}, true)};
+  doc["materials"] = Json::array({gltf_material("cloth", {0.8, 0.35, 0.25, 1.0}, true)});
   if (!a.colliders.empty()) {
     doc["materials"].push_back(gltf_material("collider", {0.6, 0.6, 0.62, 1.0}, false));
   }

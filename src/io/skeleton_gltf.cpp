@@ -145,7 +145,7 @@ Result<std::string> skeleton_glb(const SkeletonDesc& skeleton, const SkeletalMot
     const int normal = glb.add_floats(figure.normals, "VEC3", 3, false, GlbBuilder::kArrayBuffer);
     const int joint_ids = glb.add_unsigned_shorts(figure.joints, "VEC4", 4);
     const int weights = glb.add_floats(figure.weights, "VEC4", 4, false, GlbBuilder::kArrayBuffer);
-    doc["materials"] = {gltf_material("bone", {0.75, 0.72, 0.65, 1.0}, false)};
+    doc["materials"] = Json::array({gltf_material("bone", {0.75, 0.72, 0.65, 1.0}, false)});
     doc["meshes"] = {{{"name", "figure"},
                       {"primitives",
                        {{{"attributes",
