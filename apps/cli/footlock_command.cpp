@@ -12,6 +12,7 @@
 #include "animkit/core/validation.h"
 #include "animkit/io/bvh.h"
 #include "animkit/io/bvh_motion.h"
+#include "animkit/io/bvh_units.h"
 #include "animkit/io/foot_lock_report.h"
 #include "animkit/io/skeleton_gltf.h"
 #include "animkit/kinematics/foot_lock.h"
@@ -28,6 +29,7 @@ constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 struct FootlockArgs {
   std::string in, out, video;
   double scale = 1.0;
+  bool scale_given = false;  ///< else detected from the legs (body_scale.h)
   FootLockSettings settings;
   double knee_min_deg = FootLockSettings{}.min_knee_flexion / kRadiansPerDegree;
   double knee_max_deg = FootLockSettings{}.max_knee_flexion / kRadiansPerDegree;
@@ -45,13 +47,18 @@ int run(FootlockArgs args) {
   settings.min_knee_flexion = args.knee_min_deg * kRadiansPerDegree;
   settings.max_knee_flexion = args.knee_max_deg * kRadiansPerDegree;
   if (auto error = settings.validate()) return report_error(error->message);
-  if (!(std::isfinite(args.scale) && args.scale > 0.0)) {
+  if (args.scale_given && !(std::isfinite(args.scale) && args.scale > 0.0)) {
     return report_error("--scale must be a number > 0 (metres per file unit), got " +
                         format_number(args.scale));
   }
 
-  auto clip = read_bvh_file(args.in, {.scale = args.scale});
-  if (!clip) return report_error(clip.error().message);
+  auto metric =
+      read_bvh_in_metres(args.in, args.scale_given ? std::optional(args.scale) : std::nullopt);
+  if (!metric) {
+    return report_error(metric.error().message + (args.scale_given ? "" : " with --scale"));
+  }
+  args.scale = metric->metres_per_unit;
+  BvhClip* clip = &metric->clip;
   const auto skeleton = build_skeleton(clip->skeleton);
   if (!skeleton) return report_error(args.in + ": " + skeleton.error().message);
   const auto legs = find_biped_legs(*skeleton);
@@ -74,7 +81,10 @@ int run(FootlockArgs args) {
   FootLockWorkspace workspace;
   SkeletalMotion locked;
   const auto result = lock_feet(*skeleton, *legs, motion, settings, workspace, locked);
-  if (!result) return report_error(args.in + ": " + result.error().message);
+  if (!result) {
+    return report_error(args.in + ": " + result.error().message + " (" + metric->description +
+                        "; --scale sets it)");
+  }
 
   if (auto ok = render_foot_lock_video(*skeleton, motion, locked, *result, *pictures); !ok) {
     return report_error(ok.error().message);
@@ -96,6 +106,7 @@ int run(FootlockArgs args) {
   if (auto ok = output->commit(); !ok) return report_error(ok.error().message);
 
   const FootLockMetrics& m = result->metrics;
+  std::printf("footlock: %s\n", metric->description.c_str());
   std::printf(
       "footlock: %d frames, contacts left %d right %d, sliding %.3f -> %.3f cm/frame (max %.3f "
       "-> %.3f), IK error max %.3f cm, %.4f ms/frame\n",
@@ -130,9 +141,10 @@ std::function<int()> add_footlock_command(CLI::App& app) {
   cmd->add_option("--video", args->video,
                   "Also render the walk before (orange lines) and after (blue bones) to this "
                   ".mp4 or .gif (needs OpenGL and ffmpeg)");
-  cmd->add_option("--scale", args->scale,
-                  "Metres per file unit (CMU's BVH: 0.056444); thresholds are in metres")
-      ->capture_default_str();
+  CLI::Option* scale = cmd->add_option(
+      "--scale", args->scale,
+      "Metres per file unit (CMU's BVH: 0.056444); default: told from the legs' length (metres, "
+      "centimetres, millimetres, inches or CMU's unit), and said. Thresholds are in metres");
   cmd->add_option("--height", args->settings.height_threshold,
                   "A foot can be planted at most this high (m) above the clip's lowest ankle")
       ->capture_default_str();
@@ -159,7 +171,10 @@ std::function<int()> add_footlock_command(CLI::App& app) {
   cmd->add_option("--knee-pole", args->knee_pole,
                   "Where knees point: pelvis-forward or original (the clip's own bend)")
       ->capture_default_str();
-  return [args] { return run(*args); };
+  return [args, scale] {
+    args->scale_given = scale->count() > 0;
+    return run(*args);
+  };
 }
 
 }  // namespace animkit::cli

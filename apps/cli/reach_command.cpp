@@ -14,6 +14,7 @@
 #include "animkit/core/validation.h"
 #include "animkit/io/bvh.h"
 #include "animkit/io/bvh_motion.h"
+#include "animkit/io/bvh_units.h"
 #include "animkit/io/joint_limits_file.h"
 #include "animkit/io/reach_report.h"
 #include "animkit/io/skeleton_gltf.h"
@@ -33,6 +34,7 @@ struct ReachArgs {
   int frame = 0;
   std::vector<double> target;
   double scale = 1.0;
+  bool scale_given = false;  ///< else detected from the legs (body_scale.h)
   HandReachSettings settings;
 };
 
@@ -63,13 +65,18 @@ int run(ReachArgs args) {
     return report_error("--target must be three finite numbers X Y Z (metres), got " +
                         to_string(target));
   }
-  if (!(std::isfinite(args.scale) && args.scale > 0.0)) {
+  if (args.scale_given && !(std::isfinite(args.scale) && args.scale > 0.0)) {
     return report_error("--scale must be a number > 0 (metres per file unit), got " +
                         format_number(args.scale));
   }
 
-  auto clip = read_bvh_file(args.in, {.scale = args.scale});
-  if (!clip) return report_error(clip.error().message);
+  auto metric =
+      read_bvh_in_metres(args.in, args.scale_given ? std::optional(args.scale) : std::nullopt);
+  if (!metric) {
+    return report_error(metric.error().message + (args.scale_given ? "" : " with --scale"));
+  }
+  args.scale = metric->metres_per_unit;
+  BvhClip* clip = &metric->clip;
   if (clip->frame_count() == 0) return report_error(args.in + ": the clip has no frames");
   if (args.frame < 0 || args.frame >= clip->frame_count()) {
     return report_error("--frame must be in [0, " + std::to_string(clip->frame_count() - 1) +
@@ -141,6 +148,7 @@ int run(ReachArgs args) {
   if (auto ok = output->commit(); !ok) return report_error(ok.error().message);
 
   const HandReachResult& r = *result;
+  std::printf("reach: %s\n", metric->description.c_str());
   std::printf(
       "reach: %s frame %d, %s to %s with %s: hand error %.3f cm, foot drift %.4f cm, %d "
       "iterations, %.3f ms\n",
@@ -185,8 +193,10 @@ std::function<int()> add_reach_command(CLI::App& app) {
       ->expected(3)
       ->allow_extra_args(false)
       ->required();
-  cmd->add_option("--scale", args->scale, "Metres per file unit (CMU's BVH: 0.056444)")
-      ->capture_default_str();
+  CLI::Option* scale = cmd->add_option(
+      "--scale", args->scale,
+      "Metres per file unit (CMU's BVH: 0.056444); default: told from the legs' length, and "
+      "said");
   cmd->add_option("--limits", args->limits,
                   "Joint limits JSON keyed by joint name, degrees (default: human limits, knees "
                   "and elbows hinges fitted to the clip, other joints wide balls)");
@@ -201,7 +211,10 @@ std::function<int()> add_reach_command(CLI::App& app) {
                   "Folder for reached.bvh, metrics.json and reach.png (created if needed; "
                   "replaced whole when the run ends)")
       ->required();
-  return [args] { return run(*args); };
+  return [args, scale] {
+    args->scale_given = scale->count() > 0;
+    return run(*args);
+  };
 }
 
 }  // namespace animkit::cli

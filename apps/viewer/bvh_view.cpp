@@ -2,11 +2,13 @@
 
 #include <imgui.h>
 
+#include <cstdio>
 #include <filesystem>
 
 #include "animkit/core/quote.h"
 #include "animkit/io/bvh.h"
 #include "animkit/io/bvh_motion.h"
+#include "animkit/io/bvh_units.h"
 #include "animkit/io/joint_limits_file.h"
 
 namespace animkit::viewer {
@@ -23,8 +25,10 @@ int find_named(const Skeleton& skeleton, const std::string& name, const std::str
 }  // namespace
 
 Result<BvhView> BvhView::create(const BvhViewOptions& options) {
-  auto clip = read_bvh_file(options.path, {.scale = options.scale});
-  if (!clip) return fail(clip.error().message);
+  auto metric = read_bvh_in_metres(options.path, options.scale);
+  if (!metric) return fail(metric.error().message + (options.scale ? "" : " with --scale"));
+  std::printf("%s: %s\n", options.path.c_str(), metric->description.c_str());
+  BvhClip* clip = &metric->clip;
   auto skeleton = build_skeleton(clip->skeleton);
   if (!skeleton) return fail(options.path + ": " + skeleton.error().message);
   std::vector<JointLimit> limits;

@@ -18,7 +18,8 @@ struct HeldFromStart {
 
 struct BvhViewOptions {
   std::string path;         ///< the BVH clip (--bvh); the CMU walk by default
-  double scale = 0.056444;  ///< metres per file unit (CMU's BVH)
+  /// Metres per file unit (--scale); none: told from the legs (bvh_units.h) and printed.
+  std::optional<double> scale;
   std::string limits_path;  ///< a joint limits JSON file; empty: human_joint_limits()
   BvhSceneOptions scene;
   int start_frame = 0;

@@ -59,8 +59,11 @@ int run(int argc, char** argv) {
   bvh.path = ANIMKIT_DATA_DIR "/cmu/131_01.bvh";
   std::vector<std::string> holds;
   app.add_option("--bvh", bvh.path, "BVH: the clip (the CMU walk by default)");
-  app.add_option("--scale", bvh.scale, "BVH: metres per file unit (CMU's: 0.056444)")
-      ->capture_default_str();
+  double scale = 0.0;
+  CLI::Option* scale_option = app.add_option(
+      "--scale", scale,
+      "BVH: metres per file unit (CMU's: 0.056444); default: told from the legs' length, and "
+      "printed");
   app.add_option("--limits", bvh.limits_path,
                  "BVH: joint limits JSON file (default: human limits, knees and elbows hinges)");
   app.add_flag("--foot-lock", bvh.scene.foot_locked, "BVH: start on the foot-locked clip");
@@ -154,8 +157,11 @@ int run(int argc, char** argv) {
     if (!held) return report_error(held.error().message, 2);
     bvh.held.push_back(*held);
   }
-  if (!(std::isfinite(bvh.scale) && bvh.scale > 0.0)) {
-    return report_error("--scale must be a number > 0 (metres per file unit)", 2);
+  if (scale_option->count() > 0) {
+    if (!(std::isfinite(scale) && scale > 0.0)) {
+      return report_error("--scale must be a number > 0 (metres per file unit)", 2);
+    }
+    bvh.scale = scale;
   }
   if (options.scene == SceneKind::bvh) {
     const auto tree_solver = app.count("--solver") > 0 ? parse_tree_ik_solver(solver)

@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
 #include "animkit/core/validation.h"
+#include "animkit/kinematics/body_scale.h"
 #include "animkit/kinematics/ik_types.h"
 #include "animkit/kinematics/two_bone_ik.h"
 
@@ -233,6 +235,30 @@ Result<FootLockResult> lock_feet(const Skeleton& skeleton, const BipedLegs& legs
     m.contacts[leg] = static_cast<int>(result.contacts[leg].spans.size());
     m.planted_frames[leg] = static_cast<int>(
         std::count(result.contacts[leg].planted.begin(), result.contacts[leg].planted.end(), 1));
+  }
+  // Nothing to lock is a failure with its likely cause, not a run that did nothing: legs of no
+  // human length mean a clip in other units than metres (a CMU file read at scale 1 has 14 m
+  // legs, and no ankle ever moves slower than the threshold); else the thresholds exclude
+  // every frame.
+  if (m.contacts[0] + m.contacts[1] == 0) {
+    const double leg = rest_leg_length(skeleton, legs);
+    char message[512];
+    if (leg < kMinLegMetres || leg > kMaxLegMetres) {
+      std::snprintf(message, sizeof message,
+                    "no foot contact in %d frames: no ankle stays within %g m of the lowest "
+                    "ankle height at under %g m/s; the legs are %.3g m long (a person's are "
+                    "about %g m): is the clip in metres?",
+                    frames, settings.height_threshold, settings.speed_threshold, leg,
+                    kTypicalLegMetres);
+    } else {
+      std::snprintf(message, sizeof message,
+                    "no foot contact in %d frames: no ankle stays within %g m of the lowest "
+                    "ankle height at under %g m/s for %d frames or more (the height, speed and "
+                    "minimum contact settings)",
+                    frames, settings.height_threshold, settings.speed_threshold,
+                    settings.min_contact_frames);
+    }
+    return fail(message);
   }
 
   output.joint_count = input.joint_count;

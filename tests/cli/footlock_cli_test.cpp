@@ -114,4 +114,35 @@ TEST(FootlockCli, BadSettingsAndFilesAreOneLineErrorsAndWriteNothing) {
   EXPECT_FALSE(fs::exists(dir / "o"));
 }
 
+TEST(FootlockCli, AClipInCentimetresIsLockedWithoutScaleAndSaysTheScale) {
+  if (!fs::exists(kWalk)) GTEST_SKIP() << kWalk << " is not here";
+  // The walk written in centimetres: CMU's units x 5.6444.
+  const fs::path dir = fresh_dir("centimetres");
+  const auto clip = animkit::read_bvh_file(kWalk, {.scale = 5.6444});
+  ASSERT_TRUE(clip && animkit::write_bvh_file(dir / "walk_cm.bvh", *clip));
+  const auto r = run_command(kCli + " footlock --in " + (dir / "walk_cm.bvh").string() + " --out " +
+                             (dir / "o").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("footlock: scale 0.01 m per file unit (detected: centimetres, legs 80.2 "
+                        "units long)\n",
+                        0),
+            0u)
+      << r.out;
+  EXPECT_NE(r.out.find("contacts left 8 right 8"), std::string::npos) << r.out;
+}
+
+TEST(FootlockCli, AWrongScaleFindsNoContactAndFailsInOneLine) {
+  if (!fs::exists(kWalk)) GTEST_SKIP() << kWalk << " is not here";
+  const fs::path dir = fresh_dir("wrong_scale");
+  const auto r = run_command(kCli + " footlock --in " + kWalk.string() + " --scale 1 --out " +
+                             (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "animkit: error: " + kWalk.string() +
+                       ": no foot contact in 994 frames: no ankle stays within 0.05 m of the "
+                       "lowest ankle height at under 0.35 m/s; the legs are 14.2 m long (a "
+                       "person's are about 0.8 m): is the clip in metres? (scale 1 m per file "
+                       "unit (given); --scale sets it)\n");
+  EXPECT_FALSE(fs::exists(dir / "o"));
+}
+
 }  // namespace

@@ -165,10 +165,14 @@ TEST(ReachCli, BadInputIsOneLineAndWritesNothing) {
       {"reach" + in + " --target 0 1 0 --tolerance 0", "tolerance must be a positive"},
       {"reach --in " + (dir / "missing.bvh").string() + " --target 0 1 0", "missing.bvh"},
       {"reach" + in, "--target is required"},
-      {"reach --in " + (dir / "empty.bvh").string() + " --target 0 1 0",
+      {"reach --in " + (dir / "empty.bvh").string() + " --target 0 1 0 --scale 1",
        "empty.bvh: the clip has no frames"},
-      {"reach --in " + (dir / "stick.bvh").string() + " --target 0 1 0",
+      {"reach --in " + (dir / "stick.bvh").string() + " --target 0 1 0 --scale 1",
        "stick.bvh: no joint named LeftHip: a biped's legs are found by name"},
+      {"reach --in " + (dir / "stick.bvh").string() + " --target 0 1 0",
+       "stick.bvh: cannot tell its units: no joint named LeftHip: a biped's legs are found by "
+       "name (LeftHip, LeftKnee, LeftAnkle and the same on the right); give the file's scale "
+       "(metres per unit) with --scale"},
   };
   for (const auto& [args, message] : cases) {
     const auto r = run_command(kCli + " " + args + " --out " + (dir / "o").string());

@@ -224,5 +224,22 @@ TEST_F(FootLockWalk, RefusesBadInputWithAMessage) {
             "beyond 1e+09");
 }
 
+TEST(FootLockUnits, AWalkInOtherUnitsThanMetresFindsNoContactAndSaysSo) {
+  // CMU's numbers read as metres: 14 m legs, and no ankle ever slower than 0.35 "m"/s.
+  if (!std::filesystem::exists(kWalk)) GTEST_SKIP() << kWalk << " is not here";
+  auto clip = read_bvh_file(kWalk);
+  ASSERT_TRUE(clip);
+  const Skeleton skeleton = build_skeleton(clip->skeleton).value();
+  FootLockWorkspace ws;
+  SkeletalMotion out;
+  const auto result =
+      lock_feet(skeleton, find_biped_legs(skeleton).value(), motion_from_bvh(*clip), {}, ws, out);
+  ASSERT_FALSE(result);
+  EXPECT_EQ(result.error().message,
+            "no foot contact in 994 frames: no ankle stays within 0.05 m of the lowest ankle "
+            "height at under 0.35 m/s; the legs are 14.2 m long (a person's are about 0.8 m): "
+            "is the clip in metres?");
+}
+
 }  // namespace
 }  // namespace animkit
