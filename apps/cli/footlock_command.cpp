@@ -12,10 +12,10 @@
 #include "animkit/core/validation.h"
 #include "animkit/io/bvh.h"
 #include "animkit/io/bvh_motion.h"
-#include "animkit/io/bvh_units.h"
 #include "animkit/io/foot_lock_report.h"
 #include "animkit/io/skeleton_gltf.h"
 #include "animkit/kinematics/foot_lock.h"
+#include "bvh_input.h"
 #include "cli_errors.h"
 #include "footlock_video.h"
 #include "run_output.h"
@@ -47,16 +47,8 @@ int run(FootlockArgs args) {
   settings.min_knee_flexion = args.knee_min_deg * kRadiansPerDegree;
   settings.max_knee_flexion = args.knee_max_deg * kRadiansPerDegree;
   if (auto error = settings.validate()) return report_error(error->message);
-  if (args.scale_given && !(std::isfinite(args.scale) && args.scale > 0.0)) {
-    return report_error("--scale must be a number > 0 (metres per file unit), got " +
-                        format_number(args.scale));
-  }
-
-  auto metric =
-      read_bvh_in_metres(args.in, args.scale_given ? std::optional(args.scale) : std::nullopt);
-  if (!metric) {
-    return report_error(metric.error().message + (args.scale_given ? "" : " with --scale"));
-  }
+  auto metric = read_input_clip(args.in, args.scale, args.scale_given);
+  if (!metric) return report_error(metric.error().message);
   args.scale = metric->metres_per_unit;
   BvhClip* clip = &metric->clip;
   const auto skeleton = build_skeleton(clip->skeleton);

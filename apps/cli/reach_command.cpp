@@ -14,13 +14,13 @@
 #include "animkit/core/validation.h"
 #include "animkit/io/bvh.h"
 #include "animkit/io/bvh_motion.h"
-#include "animkit/io/bvh_units.h"
 #include "animkit/io/joint_limits_file.h"
 #include "animkit/io/reach_report.h"
 #include "animkit/io/skeleton_gltf.h"
 #include "animkit/kinematics/foot_lock.h"
 #include "animkit/kinematics/hand_reach.h"
 #include "animkit/kinematics/human_limits.h"
+#include "bvh_input.h"
 #include "cli_errors.h"
 #include "run_output.h"
 
@@ -65,16 +65,8 @@ int run(ReachArgs args) {
     return report_error("--target must be three finite numbers X Y Z (metres), got " +
                         to_string(target));
   }
-  if (args.scale_given && !(std::isfinite(args.scale) && args.scale > 0.0)) {
-    return report_error("--scale must be a number > 0 (metres per file unit), got " +
-                        format_number(args.scale));
-  }
-
-  auto metric =
-      read_bvh_in_metres(args.in, args.scale_given ? std::optional(args.scale) : std::nullopt);
-  if (!metric) {
-    return report_error(metric.error().message + (args.scale_given ? "" : " with --scale"));
-  }
+  auto metric = read_input_clip(args.in, args.scale, args.scale_given);
+  if (!metric) return report_error(metric.error().message);
   args.scale = metric->metres_per_unit;
   BvhClip* clip = &metric->clip;
   if (clip->frame_count() == 0) return report_error(args.in + ": the clip has no frames");
