@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "cli_errors.h"
+#include "animkit/core/validation.h"
 
 namespace animkit::cli {
 

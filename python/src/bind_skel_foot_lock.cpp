@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "animkit/kinematics/body_scale.h"
 #include "animkit/kinematics/foot_lock.h"
 #include "cloth_convert.h"
 #include "numpy_convert.h"
@@ -286,7 +287,19 @@ void bind_skel_foot_lock(py::module_& m) {
         "(found by CMU's names LeftHip/LeftKnee/LeftAnkle and Right...) or ((hip, knee, "
         "ankle), (hip, knee, ankle)) left then right, joints by index or name. Raises "
         "animkit.Error for invalid settings, legs, or a motion that does not fit (fewer than "
-        "2 frames, another joint count).");
+        "2 frames, another joint count), and when no foot contact is found (with its likely "
+        "cause: legs of no human length in metres, or the thresholds).");
+  m.def(
+      "body_scale",
+      [](const Skeleton& skeleton, const py::object& legs) {
+        const BodyScale body = unwrap(detect_body_scale(skeleton, legs_of(skeleton, legs)));
+        return py::make_tuple(body.unit.metres, std::string(body.unit.name), body.leg_units);
+      },
+      py::arg("skeleton"), py::arg("legs") = py::none(),
+      "The unit a biped's skeleton is in, told from its legs (hip to ankle at rest, nearest an "
+      "adult's 0.8 m among metres, centimetres, millimetres, inches and CMU's unit): "
+      "(metres per unit, the unit's name, the leg's length in the skeleton's units). legs as "
+      "for lock_feet. Raises animkit.Error when no unit gives a leg of 0.4 to 1.3 m.");
 }
 
 }  // namespace animkit::python

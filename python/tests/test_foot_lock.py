@@ -215,3 +215,16 @@ def test_same_bits_as_the_cli(cli, walk_path, tmp_path, scale):
     got = {name: getattr(result.metrics, name) for name in expected}
     assert got == expected  # the JSON's shortest round-trip digits read back to the same doubles
     assert expected["contacts"][0] > 0  # in metres the walk has contacts to lock
+
+
+def test_body_scale_tells_the_units_from_the_legs(walk_path):
+    raw = animkit.read_bvh(walk_path)  # CMU's own numbers
+    metres, unit, leg = animkit.body_scale(raw.skeleton)
+    assert (metres, unit) == (CMU_SCALE, "CMU's unit (inch / 0.45)")
+    assert leg == pytest.approx(14.2126, abs=1e-3)
+    centimetres = animkit.read_bvh(walk_path, scale=CMU_SCALE / 0.01)
+    assert animkit.body_scale(centimetres.skeleton)[:2] == (0.01, "centimetres")
+    giant = animkit.read_bvh(walk_path, scale=10.0)
+    with pytest.raises(animkit.Error, match="cannot tell the units of the skeleton: its legs are "
+                                            "142 units long"):
+        animkit.body_scale(giant.skeleton)

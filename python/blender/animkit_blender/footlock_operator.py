@@ -48,9 +48,15 @@ def build_properties(defaults):
     """The operator's annotations, with the library's defaults."""
     props = bpy.props
     return {
+        "detect_scale": props.BoolProperty(
+            name="Detect scale", default=True,
+            description="Tell metres per Blender unit from the legs' length at rest (metres, "
+                        "centimetres, millimetres, inches or CMU's unit: the one that makes them "
+                        "nearest an adult's 0.8 m); off: use Metres per unit"),
         "scale": props.FloatProperty(
             name="Metres per unit", default=1.0, min=1e-9, soft_max=100.0, precision=6,
-            description="Metres per Blender unit (animkit's thresholds are in metres)"),
+            description="Metres per Blender unit when Detect scale is off (animkit's "
+                        "thresholds are in metres)"),
         "height_threshold": props.FloatProperty(
             name="Height threshold", default=defaults["height_threshold"], min=1e-6,
             precision=4, unit="NONE",
@@ -114,7 +120,13 @@ def lock_armature(context, obj, options, report=None):
                 "operator's properties)")
 
     started = time.perf_counter()
-    mapping = armature_motion.ArmatureMapping(obj, get("scale"))
+    scale = get("scale")
+    scale_source = "given"
+    if get("detect_scale", True):
+        names, parents, offsets = armature_motion.ArmatureMapping(obj, 1.0).skeleton_arrays()
+        scale, unit, leg = animkit.body_scale(animkit.Skeleton(names, parents, offsets), legs)
+        scale_source = f"detected: {unit}, legs {leg:.3g} units long"
+    mapping = armature_motion.ArmatureMapping(obj, scale)
     names, parents, offsets = mapping.skeleton_arrays()
     skeleton = animkit.Skeleton(names, parents, offsets)
     wm = context.window_manager
@@ -138,7 +150,8 @@ def lock_armature(context, obj, options, report=None):
                             "rotations are written back")
     armature_motion.write_rotation_keys(mapping, frames, locked, changed)
     context.scene.frame_set(context.scene.frame_current)
-    stats = {"frames": len(frames), "bones": changed,
+    stats = {"frames": len(frames), "bones": changed, "scale": scale,
+             "scale_source": scale_source,
              "sample_seconds": sampled - started,
              "total_seconds": time.perf_counter() - started}
     return result, stats
@@ -170,7 +183,8 @@ class ANIMKIT_OT_lock_feet(bpy.types.Operator):
                     f"{m.contacts[0]} right {m.contacts[1]}, sliding "
                     f"{m.slide_before_mean_cm:.3f} -> {m.slide_after_mean_cm:.3f} cm/frame "
                     f"(max {m.slide_before_max_cm:.3f} -> {m.slide_after_max_cm:.3f}), "
-                    f"{len(stats['bones'])} bones keyed in {stats['total_seconds']:.2f} s")
+                    f"{len(stats['bones'])} bones keyed in {stats['total_seconds']:.2f} s; scale "
+                    f"{stats['scale']:.6g} m per unit ({stats['scale_source']})")
         return {"FINISHED"}
 
 

@@ -124,7 +124,37 @@ def main():
           f"the lock barely reduced the sliding: {before[0]:.4f} -> {after[0]:.4f} cm/frame")
     check(abs(ratio_blender - ratio_cli) < 1e-3 + 0.05 * ratio_cli,
           f"after/before in Blender {ratio_blender:.4f}, in the CLI {ratio_cli:.4f}")
+
+    # Imported at Blender's default scale (CMU's units as Blender units, 14 m legs): the
+    # operator tells the unit from the legs and locks the same contacts; told the units are
+    # metres, it fails saying why instead of keying nothing.
+    support.empty_scene()
+    raw = support.import_bvh(bvh, 1.0)
+    support.make_active(raw)
+    result, stats = footlock_operator.lock_armature(bpy.context, raw, {
+        "detect_scale": True, "scale": 1.0, **operator_defaults(properties)})
+    print(f"default import scale: scale {stats['scale']:.6g} ({stats['scale_source']})")
+    check(abs(stats["scale"] - CMU_SCALE) < 1e-12, f"detected scale {stats['scale']}")
+    check(result.metrics.contacts == reference.metrics.contacts,
+          f"contacts {result.metrics.contacts} at the detected scale, "
+          f"{reference.metrics.contacts} in metres")
+    support.empty_scene()
+    raw = support.import_bvh(bvh, 1.0)
+    support.make_active(raw)
+    # (An operator's error report is a RuntimeError from bpy.ops in background mode.)
+    try:
+        failed = str(bpy.ops.animkit.lock_feet(detect_scale=False, scale=1.0))
+    except RuntimeError as error:
+        failed = str(error)
+    check("no foot contact in 994 frames" in failed and "is the clip in metres?" in failed,
+          f"a 14 m walk locked as metres: {failed}")
     print("footlock_test: OK")
+
+
+def operator_defaults(properties):
+    """The operator's other properties at their defaults, as lock_armature's options."""
+    return {p.identifier: p.default for p in properties
+            if p.identifier not in ("rna_type", "detect_scale", "scale")}
 
 
 main()
