@@ -55,7 +55,12 @@ int run(CLI::App& app, int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    return animkit::cli::report_error(std::string(e.what()) + " (see animkit --help)");
+    // The subcommand whose options were wrong has the help that explains them.
+    std::string help = "animkit --help";
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App* a) { return a->parsed(); })) {
+      help = "animkit " + sub->get_name() + " --help";
+    }
+    return animkit::cli::report_error(std::string(e.what()) + " (see " + help + ")");
   }
   try {
     if (app.got_subcommand("ik")) return run_ik();

@@ -181,8 +181,11 @@ std::function<int()> add_reach_command(CLI::App& app) {
                   "left or right (joint lhand/rhand, LeftHand/RightHand or "
                   "LeftWrist/RightWrist)")
       ->capture_default_str();
-  cmd->add_option("--target", args->target, "Where the hand goes: X Y Z in metres (world)")
+  cmd->add_option("--target", args->target,
+                  "Where the hand goes: X,Y,Z in metres (world), as ik --target; X Y Z works "
+                  "too")
       ->expected(3)
+      ->delimiter(',')
       ->allow_extra_args(false)
       ->required();
   CLI::Option* scale = cmd->add_option(

@@ -33,6 +33,11 @@ std::string cloth_metrics_json(const ClothRunInfo& info, std::span<const StepRep
         {"gravity", info.gravity},
         {"tolerance", info.tolerance}}},
   };
+  // A material's sheet takes its masses and stiffnesses from the material: the lab's
+  // per-particle parameters played no part, so they are not reported as if they had.
+  if (!info.material.empty()) {
+    for (const char* unused : {"mass", "stiffness", "damping"}) j["options"].erase(unused);
+  }
   if (info.divergence) j["divergence"] = *info.divergence;
   if (!steps.empty() && steps.front().has_contact) {
     // The run's closest approach and tightest continuous-collision bound, over every step.

@@ -71,6 +71,10 @@ TEST(ClothCli, AMaterialGivesAPhysicalSheet) {
   EXPECT_EQ(m["options"]["material"], "cotton");
   EXPECT_EQ(m["options"]["gravity"], 9.81);  // physical gravity unless --gravity says otherwise
   EXPECT_EQ(m["options"]["size"], 1.0);
+  // The lab's per-particle mass, stiffness and damping play no part: not reported.
+  for (const char* unused : {"mass", "stiffness", "damping"}) {
+    EXPECT_FALSE(m["options"].contains(unused)) << unused;
+  }
   EXPECT_EQ(m["converged_fraction"], 1.0);
   // Axis springs and diagonals plus the coupling springs of the bends; no distance-2 springs.
   EXPECT_EQ(m["springs"], 2 * 10 * 11 + 2 * 10 * 10 + 2 * 9 * 11);
@@ -226,6 +230,14 @@ TEST(ClothCli, HelpExplainsEveryOption) {
         "--mass", "--stiffness", "--damping", "--gravity", "--tolerance", "--out"}) {
     EXPECT_NE(r.out.find(option), std::string::npos) << option;
   }
+}
+
+TEST(ClothCli, AnUnknownOptionPointsAtTheCommandsOwnHelp) {
+  const auto r = run_command(kCli + " cloth --frobnicate");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "animkit: error: The following argument was not expected: --frobnicate (see animkit "
+            "cloth --help)\n");
 }
 
 }  // namespace

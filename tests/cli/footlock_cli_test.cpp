@@ -91,7 +91,7 @@ TEST(FootlockCli, VideoShowsTheWalkAtSixtyFramesPerSecond) {
 TEST(FootlockCli, InIsRequired) {
   const auto r = run_command(kCli + " footlock --out " + (fresh_dir("no_in") / "o").string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err, "animkit: error: --in is required (see animkit --help)\n");
+  EXPECT_EQ(r.err, "animkit: error: --in is required (see animkit footlock --help)\n");
 }
 
 TEST(FootlockCli, BadSettingsAndFilesAreOneLineErrorsAndWriteNothing) {

@@ -195,4 +195,16 @@ TEST(ReachCli, HelpExplainsEveryOption) {
   EXPECT_NE(run_command(kCli + " --help").out.find("reach"), std::string::npos);
 }
 
+TEST(ReachCli, TheTargetTakesCommasAsIkDoesAndSpacesToo) {
+  if (!fs::exists(kWalk)) GTEST_SKIP() << kWalk << " is not here";
+  const fs::path dir = fresh_dir("target_forms");
+  const auto commas = run_command(kCli + " reach --in " + kWalk.string() +
+                                  " --target 0.6,1.4,-1.35 --out " + (dir / "a").string());
+  const auto spaces = run_command(kCli + " reach --in " + kWalk.string() +
+                                  " --target 0.6 1.4 -1.35 --out " + (dir / "b").string());
+  ASSERT_EQ(commas.exit_code, 0) << commas.err;
+  ASSERT_EQ(spaces.exit_code, 0) << spaces.err;
+  EXPECT_EQ(read_file(dir / "a" / "reached.bvh"), read_file(dir / "b" / "reached.bvh"));
+}
+
 }  // namespace

@@ -20,7 +20,8 @@ struct ClothRunInfo {
   /// Set when the run diverged: the error message (the steps are those before it).
   std::optional<std::string> divergence;
   /// The material preset of a physical sheet (empty: the lab's per-particle parameters, which
-  /// mass, stiffness and damping then give), and the sheet's side.
+  /// mass, stiffness and damping then give; with a material those three are left out of the
+  /// report), and the sheet's side.
   std::string material;
   double size = 0.0;
 };
