@@ -245,8 +245,8 @@ std::function<int()> add_cloth_command(CLI::App& app) {
     }
     for (const char* option :
          {"--grid", "--size", "--mesh", "--pin", "--pin-box", "--material", "--mass", "--stiffness",
-          "--damping", "--gravity", "--sphere", "--ground", "--thickness", "--friction",
-          "--no-self-contact", "--wind", "--gust"}) {
+          "--damping", "--gravity", "--sphere", "--box", "--capsule", "--ground", "--thickness",
+          "--friction", "--no-self-contact", "--wind", "--gust"}) {
       if (cloth->count(option) > 0) args->world_options_given.emplace_back(option);
     }
     return run_cloth(*args);

@@ -70,10 +70,14 @@ Result<ClothWorldDesc> world_of(const ClothArgs& args) {
     return fail("--scene needs a built-in scene's name or a .json file, got ''");
   // Options that only mean something beside another, refused rather than ignored (with
   // --scene they are refused below: the scene gives the world whole).
-  const bool contact = args.given("--sphere") || args.given("--ground");
+  const bool contact = args.given("--sphere") || args.given("--box") || args.given("--capsule") ||
+                       args.given("--ground");
   for (const char* option : {"--thickness", "--friction", "--no-self-contact"}) {
-    if (!args.given("--scene") && args.given(option) && !contact)
-      return fail(std::string(option) + " applies to contact: give --sphere or --ground too");
+    if (!args.given("--scene") && args.given(option) && !contact) {
+      return fail(std::string(option) +
+                  " applies to contact: give a collider (--sphere, --box, --capsule) or --ground "
+                  "too");
+    }
   }
   if (!args.given("--scene") && args.given("--gust") && !args.given("--wind"))
     return fail("--gust adds gusts to a wind: give --wind too (--wind 0,0,0 for gusts alone)");

@@ -32,6 +32,19 @@ TEST(ClothWorldCli, AClothOverASphereAndGroundWritesTheColliders) {
   EXPECT_NE(obj.find("\nf "), std::string::npos);
 }
 
+TEST(ClothWorldCli, BoxesAndCapsulesComeFromTheCommandLineAsSpheresDo) {
+  const fs::path out = animkit::testing_support::fresh_dir("cloth_world_box");
+  // The lab's cloth swings down onto a box and a capsule lying along z.
+  const auto r = run_command(kCli +
+                             " cloth --grid 8 --frames 20 --box 0.6,0.9,0,0.2,0.1,0.2"
+                             " --capsule 1.4,0.9,0,0.1,0.3,0,0,1 --no-picture --out " +
+                             out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string obj = read_file(out / "colliders.obj");
+  EXPECT_NE(obj.find("o box 1"), std::string::npos) << obj.substr(0, 200);
+  EXPECT_NE(obj.find("o capsule 1"), std::string::npos);
+}
+
 TEST(ClothWorldCli, WindRuns) {
   const auto r = run_command(kCli + " cloth --grid 8 --frames 20 --wind 3,0,0 --gust 2,0,0");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -71,8 +84,20 @@ INSTANTIATE_TEST_SUITE_P(
                  "wind velocity (m/s) must have each coordinate between -1e+06 and 1e+06, got "
                  "(1e+300, 0, 0)"},
         BadWorld{"--thickness 0.01",
-                 "--thickness applies to contact: give --sphere or --ground too"},
-        BadWorld{"--friction 0.5", "--friction applies to contact: give --sphere or --ground too"},
+                 "--thickness applies to contact: give a collider (--sphere, --box, --capsule) "
+                 "or --ground too"},
+        BadWorld{"--friction 0.5",
+                 "--friction applies to contact: give a collider (--sphere, --box, --capsule) or "
+                 "--ground too"},
+        BadWorld{"--box 1,0,0,1,1", "--box expects CX,CY,CZ,HX,HY,HZ, got '1,0,0,1,1'"},
+        BadWorld{
+            "--box 1,0,0,0.1,-1,0.1",
+            "collider 'box 1': half extents must be > 0 and at most 1e+06, got (0.1, -1, 0.1)"},
+        BadWorld{"--capsule 1,0,0,0.1,0.2,0,0,0",
+                 "--capsule's direction AX,AY,AZ must be a non-zero vector, got "
+                 "'1,0,0,0.1,0.2,0,0,0'"},
+        BadWorld{"--capsule 1,0,0,0.1",
+                 "--capsule expects CX,CY,CZ,R,H or CX,CY,CZ,R,H,AX,AY,AZ, got '1,0,0,0.1'"},
         BadWorld{"--gust 1,0,0",
                  "--gust adds gusts to a wind: give --wind too (--wind 0,0,0 for gusts alone)"},
         BadWorld{"--scene ''", "--scene needs a built-in scene's name or a .json file, got ''"},
