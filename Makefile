@@ -6,6 +6,7 @@
 #               assertions are checked too)
 # and the edit loop and the rest:
 #   make check  the library's unit tests (label `fast`) in Release, after an incremental build
+#   make blender  the Python module and the Blender add-on into your own Blender (no root)
 #   make fuzz   builds the libFuzzer targets in the sanitizer tree and runs each FUZZ_SECONDS (60)
 # Test tiers and timeouts: cmake/test_tiers.cmake.
 JOBS   ?= $(shell nproc)
@@ -31,7 +32,7 @@ CONFIGURE_SANITIZE = $(CMAKE) -S . -B $(SANITIZE_DIR) $(call GENERATOR,$(SANITIZ
 	-DANIMKIT_SANITIZE=ON -DANIMKIT_BUILD_FUZZERS=ON \
 	-DANIMKIT_BUILD_BENCHMARKS=OFF -DANIMKIT_BUILD_PYTHON=OFF
 
-.PHONY: deps test-deps build demo viewer test test-release test-sanitize check fuzz bench clean
+.PHONY: deps test-deps build demo viewer blender test test-release test-sanitize check fuzz bench clean
 
 deps:
 	bash scripts/install-deps.sh
@@ -51,6 +52,12 @@ viewer: deps
 	$(CONFIGURE_RELEASE)
 	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target animkit-viewer
 	$(RELEASE_DIR)/apps/viewer/animkit-viewer
+
+# The module and the add-on into your own Blender (no root): scripts/install-blender.sh.
+blender: deps
+	$(CONFIGURE_RELEASE)
+	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target animkit_python
+	bash scripts/install-blender.sh $(RELEASE_DIR)
 
 test-deps:
 	bash scripts/install-deps.sh --tests

@@ -1,8 +1,8 @@
 """animkit for Blender: cloth simulation and foot locking from animkit's Python module.
 
-Install the module with `cmake --install build/release` (it goes to Python's dist-packages,
-which Debian's Blender reads), then this folder as an add-on (Preferences > Add-ons > Install
-with a zip of it, or a symlink in ~/.config/blender/<version>/scripts/addons).
+Install both into your own Blender, no root needed: `make blender` (scripts/install-blender.sh
+copies the module and this folder into ~/.config/blender/<version>/scripts and enables the
+add-on). File > Import gains BVH and glTF entries that work in Debian's Blender 3.4.
 """
 
 bl_info = {
@@ -17,7 +17,7 @@ bl_info = {
 
 import bpy  # noqa: E402  (after bl_info, as Blender add-ons are laid out)
 
-from . import cloth_operator, footlock_operator  # noqa: E402
+from . import cloth_operator, footlock_operator, imports  # noqa: E402
 
 _classes = []
 
@@ -31,15 +31,18 @@ def _menu(self, context):
 def register():
     """Registers the operators and adds them to the Object menu."""
     _classes[:] = [cloth_operator.ANIMKIT_OT_simulate_cloth,
-                   footlock_operator.make_operator_class()]
+                   footlock_operator.make_operator_class(), imports.ANIMKIT_OT_import_bvh,
+                   imports.ANIMKIT_OT_import_gltf]
     for cls in _classes:
         bpy.utils.register_class(cls)
     bpy.types.VIEW3D_MT_object.append(_menu)
+    bpy.types.TOPBAR_MT_file_import.append(imports.menu_entries)
 
 
 def unregister():
     """Removes what register() added."""
     bpy.types.VIEW3D_MT_object.remove(_menu)
+    bpy.types.TOPBAR_MT_file_import.remove(imports.menu_entries)
     for cls in reversed(_classes):
         bpy.utils.unregister_class(cls)
     _classes.clear()

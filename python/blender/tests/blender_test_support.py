@@ -6,7 +6,6 @@ TEST.py -- PYTHON_DIR DATA_DIR [MORE...]`: PYTHON_DIR is the build's python fold
 the animkit package), DATA_DIR the repository's data/. The add-on is loaded from this source
 tree (python/blender), so the tests run what the repository holds, not an installed copy.
 """
-import builtins
 import pathlib
 import sys
 
@@ -41,36 +40,11 @@ def empty_scene():
         bpy.data.objects.remove(obj, do_unlink=True)
 
 
-def _open_without_u(file, mode="r", *args, **kwargs):
-    if isinstance(mode, str):
-        mode = mode.replace("U", "")
-    return _OPEN(file, mode, *args, **kwargs)
-
-
-_OPEN = builtins.open
-
-
 def import_bvh(path, scale, **options):
-    """Imports a BVH file with io_anim_bvh (global_scale=scale, one BVH frame per Blender frame
-    from frame 1, the scene's fps set to the file's) and returns the armature object.
-
-    Blender 3.4's importer opens the file with mode 'rU', which Python 3.11 refuses: 'U' is
-    dropped from open()'s mode during the import."""
-    import bpy
-    builtins.open = _open_without_u
-    try:
-        result = bpy.ops.import_anim.bvh(
-            filepath=str(path), target="ARMATURE", global_scale=scale, frame_start=1,
-            use_fps_scale=False, update_scene_fps=True, update_scene_duration=True,
-            rotate_mode="NATIVE", **options)
-    finally:
-        builtins.open = _OPEN
-    if result != {"FINISHED"}:
-        raise RuntimeError(f"import of {path} returned {result}")
-    armatures = [o for o in bpy.context.scene.objects if o.type == "ARMATURE"]
-    if len(armatures) != 1:
-        raise RuntimeError(f"expected 1 armature after the import, found {len(armatures)}")
-    return armatures[0]
+    """Imports a BVH file through the add-on's importer (animkit_blender.imports: Blender's
+    io_anim_bvh, made to work on Python 3.11) and returns the armature object."""
+    from animkit_blender import imports
+    return imports.import_bvh(path, scale, **options)
 
 
 def make_active(*objects):
