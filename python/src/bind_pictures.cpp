@@ -32,7 +32,7 @@ Result<Image> render(const SimulatorObject& s, int width, int height) {
   ClothPictureFrame framing;
   {
     std::lock_guard lock(s.mutex);
-    framing = s.picture_frame();
+    framing = widened_to_hold(s.picture_frame(), s.sim().state());
     describe_cloth(picture, s.sim().model(), s.sim().state(),
                    {.floor_height = framing.floor_height});
     describe_colliders(picture, s.posed_colliders());

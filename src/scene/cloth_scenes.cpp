@@ -152,6 +152,25 @@ ClothPictureFrame cloth_picture_frame(const ClothWorldDesc& world, const ClothDe
   return {box, floor};
 }
 
+ClothPictureFrame widened_to_hold(ClothPictureFrame frame, const ClothState& state) {
+  const double slack = 0.05 * frame.focus.sizes().maxCoeff();
+  Eigen::AlignedBox3d inner = frame.focus;
+  inner.min().array() -= slack;
+  inner.max().array() += slack;
+  bool widened = false;
+  for (Eigen::Index i = 0; i + 2 < state.positions.size(); i += 3) {
+    const Vec3 p = state.positions.segment<3>(i);
+    if (!inner.contains(p)) {
+      frame.focus.extend(p);
+      widened = true;
+    }
+  }
+  if (widened) {
+    frame.floor_height = std::min(frame.floor_height, frame.focus.min().y() - slack);
+  }
+  return frame;
+}
+
 std::span<const ClothSceneEntry> cloth_scenes() {
   return kScenes;
 }

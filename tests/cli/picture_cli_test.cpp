@@ -67,6 +67,33 @@ TEST(ClothPictures, FinalPngShowsTheCloth) {
   EXPECT_GT(count_pixels(image, is_cloth), 480 * 360 / 20);
 }
 
+TEST(ClothPictures, AStretchedSheetStaysWholeInFinalPngAndIsSaidToStretch) {
+  // The lab's per-particle parameters on a 41 x 41 grid: the sheet hangs 1.9 times its length,
+  // far out of the box the start frames. final.png frames the end too: no cloth on its edges.
+  const fs::path out = fresh_dir("stretched");
+  const auto r = run_command(kCli + " cloth --grid 40 --frames 300 --picture-size 480x360 --out " +
+                             out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("animkit: note: the lab's mass and stiffness are per particle and "
+                       "spring, so 41 x 41 particles make a heavier, stretchier sheet"),
+            std::string::npos)
+      << r.err;
+  const Image image = read_png(out / "final.png");
+  ASSERT_EQ(image.width, 480);
+  EXPECT_GT(count_pixels(image, is_cloth), 480 * 360 / 40);
+  int on_edges = 0;
+  for (int x = 0; x < image.width; ++x) {
+    on_edges += is_cloth(image.at(x, 0)) + is_cloth(image.at(x, image.height - 1));
+  }
+  for (int y = 0; y < image.height; ++y) {
+    on_edges += is_cloth(image.at(0, y)) + is_cloth(image.at(image.width - 1, y));
+  }
+  EXPECT_EQ(on_edges, 0);
+  // A material's sheet is the same at any grid: nothing to say.
+  const auto cotton = run_command(kCli + " cloth --material cotton --grid 40 --size 1 --frames 1");
+  EXPECT_EQ(cotton.err, "");
+}
+
 TEST(Video, EveryFrameGoesToTheVideo) {
   if (!animkit::find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
   const fs::path out = fresh_dir("video");

@@ -36,6 +36,12 @@ ClothPictureFrame cloth_picture_frame(const ClothWorldDesc& world, const ClothDe
                                       const ClothState& state,
                                       const std::vector<Collider>& colliders);
 
+/// The same frame widened to also hold `state`'s particles where they left it (by more than
+/// 5% of its largest side), with the floor drawn below them: a picture of a run's end keeps a
+/// sheet that stretched or slid away whole (the lab's parameters on a fine grid hang twice as
+/// long as their start frame expects).
+ClothPictureFrame widened_to_hold(ClothPictureFrame frame, const ClothState& state);
+
 /// The square cotton sheet of `cells` cells per side and `size` m that the contact scenes
 /// use: flat at height y, centred on the y axis, free (no pins), gravity 9.81. Solved by
 /// Newton with multigrid to 1e-4 relative gradient, at dt 1/30 s.
