@@ -1,4 +1,4 @@
-# The two commands of the README:
+# The two commands of the README (docs/getting-started.md):
 #   make demo   installs dependencies, builds (Release; the CLI and the Python module) and runs
 #               the built-in demo
 #   make test   installs dependencies, builds and runs every test in Release, then every test
@@ -7,6 +7,7 @@
 # and the edit loop and the rest:
 #   make check  the library's unit tests (label `fast`) in Release, after an incremental build
 #   make blender  the Python module and the Blender add-on into your own Blender (no root)
+#   make docs   the documentation site (docs/, mkdocs.yml) into build/site
 #   make fuzz   builds the libFuzzer targets in the sanitizer tree and runs each FUZZ_SECONDS (60)
 # Test tiers and timeouts: cmake/test_tiers.cmake.
 JOBS   ?= $(shell nproc)
@@ -32,7 +33,7 @@ CONFIGURE_SANITIZE = $(CMAKE) -S . -B $(SANITIZE_DIR) $(call GENERATOR,$(SANITIZ
 	-DANIMKIT_SANITIZE=ON -DANIMKIT_BUILD_FUZZERS=ON \
 	-DANIMKIT_BUILD_BENCHMARKS=OFF -DANIMKIT_BUILD_PYTHON=OFF
 
-.PHONY: deps test-deps build demo viewer blender test test-release test-sanitize check fuzz bench clean
+.PHONY: deps test-deps build demo viewer blender docs test test-release test-sanitize check fuzz bench clean
 
 deps:
 	bash scripts/install-deps.sh
@@ -47,7 +48,7 @@ demo: deps
 	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target animkit-cli animkit_python
 	$(RELEASE_DIR)/apps/cli/animkit demo --out $(OUT)
 
-# Opens animkit-viewer in a window (needs a display; see the README for --capture without one).
+# Opens animkit-viewer in a window (needs a display; see docs/viewer.md for --capture without one).
 viewer: deps
 	$(CONFIGURE_RELEASE)
 	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target animkit-viewer
@@ -58,6 +59,13 @@ blender: deps
 	$(CONFIGURE_RELEASE)
 	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target animkit_python
 	bash scripts/install-blender.sh $(RELEASE_DIR)
+
+# The documentation site into build/site (mkdocs.yml): warnings are errors (--strict fails on a
+# link to a missing page), and every link to a heading is checked too.
+docs:
+	bash scripts/install-deps.sh --docs
+	mkdocs build --strict --site-dir build/site
+	python3 scripts/check-doc-links.py build/site
 
 test-deps:
 	bash scripts/install-deps.sh --tests

@@ -1,6 +1,6 @@
 // IK per-target cost on the lab's star (400 targets, warm start, reset to rest at the start of
 // the shape, as the lab's app runs it), animkit's double solvers against the lab's
-// straightforward float versions in the same binary; and the tree solvers (issue 12) on the same
+// straightforward float versions in the same binary; and the tree solvers on the same
 // arm as a one-branch skeleton, free and with joint limits, against the chain solvers without
 // limits (the issue asks that the arm with limits keep the chain's speed within 20%). Prints
 // the ratios at the end.

@@ -1,4 +1,4 @@
-// Fuzzes the BVH reader (issue 12) and what follows a successful read: the clip is valid, its
+// Fuzzes the BVH reader and what follows a successful read: the clip is valid, its
 // frames pose the skeleton with finite numbers, and it writes and reads back the same.
 #include <cmath>
 #include <cstddef>

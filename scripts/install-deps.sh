@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs animkit's build dependencies from Debian 12's own packages; with --tests, what
-# `make test` and `make fuzz` add, kept apart so `make demo` stays light.
+# `make test` and `make fuzz` add, kept apart so `make demo` stays light; with --docs, what
+# `make docs` needs.
 # Idempotent: when every package is already installed it does nothing (no network).
 set -euo pipefail
 
@@ -26,14 +27,17 @@ packages=(
   # frame (code independent of the solver's), and Bullet's soft body is the drape benchmark's
   # point of comparison. The library itself uses neither.
   libcgal-dev libbullet-dev
-  # Tree IK benchmark only: Orocos KDL's tree solvers are its point of comparison (issue 12).
+  # Tree IK benchmark only: Orocos KDL's tree solvers are its point of comparison.
   liborocos-kdl-dev
   # The Python module (python/): pybind11 and Debian's Python 3.11 with numpy, which Blender
   # 3.4 runs too.
   pybind11-dev python3-dev python3-numpy
 )
-if [ "${1:-}" = "--tests" ]; then
-  # The tests only: Blender (Debian's 3.4, the version the README's Blender steps use) opens the
+if [ "${1:-}" = "--docs" ]; then
+  # The documentation site (make docs): mkdocs and its Material theme.
+  packages=(mkdocs mkdocs-material)
+elif [ "${1:-}" = "--tests" ]; then
+  # The tests only: Blender (Debian's 3.4, the version docs/blender.md uses) opens the
   # BVH files animkit writes and compares them with what animkit computed, and runs the add-on
   # headless; pytest runs the Python module's tests, matplotlib the examples' plots.
   # Dask (python3-distributed) runs the parameter sweep example on a local cluster.

@@ -186,10 +186,11 @@ std::function<int()> add_cloth_command(CLI::App& app) {
       "Simulates the lab's mass-spring cloth (an (N+1) x (N+1) grid pinned at two "
       "corners) and reports what each step did; --out writes metrics and an animation "
       "Blender opens (cloth.obj + cloth.pc2 for the Mesh Cache modifier).");
-  cloth->add_option("--scene", args->scene,
-                    "A whole scene: a built-in one (" + cloth_scene_names() +
-                        ") or a JSON scene file (see the README); --frames, --dt, --integrator, "
-                        "--tolerance and --substeps may replace its own");
+  cloth->add_option(
+      "--scene", args->scene,
+      "A whole scene: a built-in one (" + cloth_scene_names() +
+          ") or a JSON scene file (see docs/contact.md); --frames, --dt, --integrator, "
+          "--tolerance and --substeps may replace its own");
   cloth->add_option("--grid", args->grid.cells, "Cells per side N (N + 1 particles per side)")
       ->capture_default_str();
   cloth->add_option("--size", args->grid.size, "Side of the square sheet (m with --material)")
@@ -204,7 +205,7 @@ std::function<int()> add_cloth_command(CLI::App& app) {
   cloth->add_option("--material", args->material,
                     "A physical sheet of: " + material_names() +
                         " (masses and stiffnesses from the material, gravity 9.81; see the "
-                        "README for the values)");
+                        "docs/materials.md for the values)");
   cloth->add_option("--frames", args->frames, "Steps to simulate")->capture_default_str();
   cloth->add_option("--dt", args->dt, "Seconds per step (the frame's duration)")
       ->capture_default_str();
@@ -234,7 +235,7 @@ std::function<int()> add_cloth_command(CLI::App& app) {
   add_world_options(*cloth, args->world);
   cloth->add_option("--out", args->out,
                     "Folder for metrics.json, cloth.obj, cloth.pc2, cloth.glb and final.png "
-                    "(created if needed; replaced whole when the run ends, see the README)");
+                    "(created if needed; replaced whole when the run ends, see docs/errors.md)");
   cloth->add_flag("--no-gltf", args->no_gltf,
                   "No cloth.glb (glTF 2.0: the sheet and colliders with every frame, for web "
                   "viewers, three.js, Godot, Unity and Blender) in the --out folder");

@@ -1,5 +1,5 @@
 #pragma once
-// `animkit cloth-study`: the convergence study of the implicit integrators (issue 10).
+// `animkit cloth-study`: the convergence study of the implicit integrators.
 #include <CLI/CLI.hpp>
 #include <functional>
 

@@ -259,7 +259,7 @@ std::function<int()> add_ik_command(CLI::App& app) {
       ->excludes(cold_start);
   ik->add_option("--out", args->out,
                  "Folder for metrics.json, path.csv, drawing.svg and drawing.png (created if "
-                 "needed; replaced whole when the run ends, see the README)");
+                 "needed; replaced whole when the run ends, see docs/errors.md)");
   add_picture_options(*ik, args->pictures, "drawing.png");
   ik->add_option("--picture-frame", args->picture_frame,
                  "Show frame N (from 0) in drawing.png instead of the last: the arm mid-drawing");

@@ -3,7 +3,7 @@
 The classes and functions are the C++ library's (bound with pybind11): the same solvers, the same
 defaults and the same error messages as the `animkit` command-line tool. Bad input raises
 animkit.Error (a ValueError) naming the problem. Arrays come and go as numpy float64 arrays;
-quaternions are (w, x, y, z). See help(animkit.<name>) and the README's Python section.
+quaternions are (w, x, y, z). See help(animkit.<name>) and docs/python.md.
 """
 from . import _animkit
 from ._animkit import *  # noqa: F401,F403 (the module's whole public API)

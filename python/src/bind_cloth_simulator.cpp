@@ -323,9 +323,17 @@ void bind_cloth_simulator(py::module_& m) {
             std::vector<py::object> callables;
             if (!callback.is_none()) callables.push_back(callback);
             std::vector<ClothSink*> all;
+            // Held for the whole run: `sinks` may be a generator, or a list another thread
+            // empties between steps.
+            std::vector<py::object> held;
             for (py::handle item : sinks) {
               if (py::isinstance<ClothSink>(item)) {
-                all.push_back(item.cast<ClothSink*>());  // `sinks` keeps it alive
+                held.push_back(py::reinterpret_borrow<py::object>(item));
+                ClothSink* sink = item.cast<ClothSink*>();
+                if (std::find(all.begin(), all.end(), sink) != all.end()) {
+                  raise("the same sink is in sinks twice (each writes its own files once)");
+                }
+                all.push_back(sink);
               } else if (PyCallable_Check(item.ptr()) != 0) {
                 callables.push_back(py::reinterpret_borrow<py::object>(item));
               } else {

@@ -57,7 +57,7 @@ void bind_cloth_sinks(py::module_& m) {
              options.cloth_file = std::move(file);
              options.colliders = colliders;
              if (!transform.is_none()) options.transform = to_affine(transform);
-             if (!std::isfinite(start_frame)) raise("start_frame must be a finite number");
+             if (!(std::abs(start_frame) <= 1e9)) raise("start_frame must be between -1e9 and 1e9");
              options.start_frame = static_cast<float>(start_frame);
              return std::make_unique<PointCacheSink>(folder, std::move(options));
            }),

@@ -102,3 +102,21 @@ def test_write_glb_writes_a_skeleton_in_metres(tmp_path, data_dir):
     with pytest.raises(animkit.Error, match="metres per unit"):
         animkit.write_glb(tmp_path / "bad.glb", clip, metres_per_unit=0)
     assert not (tmp_path / "bad.glb").exists()
+
+
+def test_sinks_from_a_generator_twice_the_same_and_reused(tmp_path):
+    sim = animkit.ClothSimulator(small_drape(2))
+    # A generator's items are held for the whole run.
+    sim.run(sinks=(animkit.GltfSink(tmp_path / f"{k}.glb") for k in range(2)))
+    assert (tmp_path / "0.glb").exists() and (tmp_path / "1.glb").exists()
+    cache = animkit.PointCacheSink(tmp_path / "again")
+    (tmp_path / "again").mkdir()
+    with pytest.raises(animkit.Error, match="the same sink is in sinks twice"):
+        sim.run(sinks=[cache, cache])
+    # A run the callback stops drops the sink's temporaries at once, even while the sink is
+    # kept; the sink then serves the next run whole.
+    sim.run(sinks=[cache], callback=lambda frame, report: False)
+    assert list((tmp_path / "again").iterdir()) == []
+    sim.run(frames=2, sinks=[cache])
+    assert sorted(p.name for p in (tmp_path / "again").iterdir()) == ["cloth.pc2",
+                                                                     "colliders.pc2"]

@@ -46,12 +46,18 @@ template <typename PoseColliders>
 Result<ClothRun> run_with_sinks(ClothSimulator& sim, int frames, double dt,
                                 std::span<ClothSink* const> sinks, std::vector<Collider>& posed,
                                 const PoseColliders& pose_colliders) {
+  // A failure leaves nothing behind: every sink drops what it kept.
+  const auto failed = [&](const Error& error) -> Result<ClothRun> {
+    for (ClothSink* sink : sinks) sink->abandon();
+    return fail(error.message);
+  };
   ClothRun run;
-  run.steps.reserve(static_cast<std::size_t>(std::max(frames, 0)));
+  // Grown as the steps come (a run may stop early); only a bounded start is reserved.
+  run.steps.reserve(static_cast<std::size_t>(std::clamp(frames, 0, 1024)));
   pose_colliders();
   ClothFrame start{.frame = 0, .simulator = sim, .colliders = posed};
   for (ClothSink* sink : sinks) {
-    if (auto ok = sink->begin(start, frames, dt); !ok) return fail(ok.error().message);
+    if (auto ok = sink->begin(start, frames, dt); !ok) return failed(ok.error());
   }
   int reached = 0;
   for (int frame = 1; frame <= frames; ++frame) {
@@ -66,7 +72,7 @@ Result<ClothRun> run_with_sinks(ClothSimulator& sim, int frames, double dt,
     const ClothFrame now{
         .frame = frame, .simulator = sim, .colliders = posed, .step = &run.steps.back()};
     for (ClothSink* sink : sinks) {
-      if (auto ok = sink->frame(now); !ok) return fail(ok.error().message);
+      if (auto ok = sink->frame(now); !ok) return failed(ok.error());
     }
   }
   const ClothFrame last{.frame = reached,
@@ -74,7 +80,7 @@ Result<ClothRun> run_with_sinks(ClothSimulator& sim, int frames, double dt,
                         .colliders = posed,
                         .step = run.steps.empty() ? nullptr : &run.steps.back()};
   for (ClothSink* sink : sinks) {
-    if (auto ok = sink->finish(run, last); !ok) return fail(ok.error().message);
+    if (auto ok = sink->finish(run, last); !ok) return failed(ok.error());
   }
   return run;
 }

@@ -115,7 +115,7 @@ bool ImplicitEuler::solve_newton_system(double relative_gradient, IterationRecor
   return !pcg.indefinite;
 }
 
-// The substep as a recipe of named stages (SPEC.md section 4): start at the prediction,
+// The substep as a recipe of named stages (docs/implicit-step.md): start at the prediction,
 // then Newton iterations (direction, step bound, line search, accept) until the stopping
 // test, then the velocity update. Each stage adds its time to the report.
 void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
@@ -270,7 +270,7 @@ double ImplicitEuler::step_bound(StepReport& report) {
   return bound;
 }
 
-// Backtracking line search (SPEC.md): alpha = 1/beta; repeat alpha = beta alpha,
+// Backtracking line search (docs/implicit-step.md): alpha = 1/beta; repeat alpha = beta alpha,
 // x' = x + alpha dx, until g(x') <= g(x) + gamma alpha grad.dx, starting no longer than the
 // step bound. The difference g(x') - g(x) is evaluated directly (see
 // IncrementalPotential::difference); a NaN or an infinity rejects. On success, trial_ holds

@@ -18,8 +18,8 @@ namespace {
 const std::array kPresets{
     MaterialPreset{"cotton",
                    {0.15, 1000.0, 40.0, 1e-5, 0.0},
-                   "150 g/m^2 woven cotton (a shirting); stretch 1000 N/m as in issue 10's "
-                   "cotton sheet; KES shear ~0.7 gf/(cm deg), bending ~0.1 gf cm^2/cm"},
+                   "150 g/m^2 woven cotton (a shirting); stretch 1000 N/m, the convergence "
+                   "study's cotton sheet; KES shear ~0.7 gf/(cm deg), bending ~0.1 gf cm^2/cm"},
     MaterialPreset{"silk",
                    {0.05, 400.0, 10.0, 1e-6, 0.0},
                    "50 g/m^2 silk charmeuse; soft in shear (KES ~0.2 gf/(cm deg)) and bending "

@@ -16,6 +16,9 @@ constexpr std::size_t kMaxJobNameLength = 100;
 
 std::optional<std::string> job_name_problem(const std::string& name) {
   if (name.empty()) return "is empty";
+  if (name == "logs" || name == "batch.json") {
+    return "is the batch's own (its logs/ folder and batch.json)";
+  }
   if (name.size() > kMaxJobNameLength) return "is longer than 100 characters";
   if (name.front() == '.') return "starts with '.'";
   for (char c : name) {

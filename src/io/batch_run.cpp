@@ -10,6 +10,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <thread>
 
 #include "animkit/io/atomic_write.h"
 #include "animkit/io/file_bytes.h"
@@ -115,6 +116,7 @@ Result<std::vector<BatchJobResult>> run_batch(std::span<const BatchJob> jobs,
   int ended = 0;
   const auto end_job = [&](std::size_t i) -> Result<void> {
     ++ended;
+    results[i].ended = true;
     if (settings.on_job_end) settings.on_job_end(results[i], ended, static_cast<int>(jobs.size()));
     return write_file_atomic(settings.out / kSummaryName,
                              batch_summary_json(results, settings.out));
@@ -153,14 +155,23 @@ Result<std::vector<BatchJobResult>> run_batch(std::span<const BatchJob> jobs,
       running.emplace(*pid, Running{i, std::move(*output)});
     }
     if (running.empty()) continue;
+    // Only the batch's own children are waited for (another child of the process keeps its
+    // exit status for whoever started it): each is asked in turn, without blocking.
     int status = 0;
-    const pid_t pid = ::waitpid(-1, &status, 0);
-    if (pid < 0) {
-      if (errno == EINTR) continue;
-      return fail(std::string("waiting for the batch's jobs failed: ") + std::strerror(errno));
+    auto it = running.end();
+    while (it == running.end()) {
+      for (auto candidate = running.begin(); candidate != running.end(); ++candidate) {
+        const pid_t done = ::waitpid(candidate->first, &status, WNOHANG);
+        if (done == candidate->first) {
+          it = candidate;
+          break;
+        }
+        if (done < 0 && errno != EINTR) {
+          return fail(std::string("waiting for the batch's jobs failed: ") + std::strerror(errno));
+        }
+      }
+      if (it == running.end()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    const auto it = running.find(pid);
-    if (it == running.end()) continue;  // not one of the jobs
     const std::size_t i = it->second.index;
     const std::string output = it->second.output.finish();
     running.erase(it);
@@ -184,7 +195,7 @@ std::string batch_summary_json(std::span<const BatchJobResult> results, const fs
   int counts[3] = {0, 0, 0};
   double wall = 0.0, job_seconds = 0.0;
   for (const BatchJobResult& r : results) {
-    if (r.name.empty()) continue;  // not started yet
+    if (!r.ended) continue;  // not ended yet: not listed as if it had
     counts[static_cast<int>(r.status)] += 1;
     wall = std::max(wall, r.finished);
     job_seconds += r.finished - r.started;

@@ -21,8 +21,8 @@ std::array<float, 4> quaternion_xyzw(const Quat& q) {
 std::optional<Error> check(const ClothAnimation& a) {
   if (a.vertex_count <= 0) return Error{"the cloth has no vertices"};
   if (a.triangles.empty()) return Error{"the cloth has no triangles"};
-  if (!(a.frame_time > 0.0) || !std::isfinite(a.frame_time))
-    return Error{"the frame time must be a positive number of seconds"};
+  if (!(a.frame_time >= kMinGltfFrameTime && a.frame_time <= kMaxGltfFrameTime))
+    return Error{"the frame time must be between 1e-09 and 1e+06 s"};
   if (a.positions.empty() || a.positions.size() % (3 * static_cast<std::size_t>(a.vertex_count)))
     return Error{"the positions are not whole frames of the cloth's vertices"};
   for (const auto& t : a.triangles)

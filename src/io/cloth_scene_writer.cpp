@@ -97,30 +97,40 @@ Result<Json> collider(const ColliderDesc& c) {
 }
 
 // Pretty JSON with every array of numbers on one line ([0.0, 0.25, 0.0], not five lines).
+// Strings (names) are copied as they are, brackets in them included.
 std::string with_short_arrays(const std::string& pretty) {
   std::string out;
   out.reserve(pretty.size());
+  bool in_string = false;
   for (std::size_t i = 0; i < pretty.size(); ++i) {
-    if (pretty[i] != '[') {
-      out += pretty[i];
+    const char c = pretty[i];
+    if (in_string) {
+      out += c;
+      if (c == '\\' && i + 1 < pretty.size()) {
+        out += pretty[++i];
+      } else if (c == '"') {
+        in_string = false;
+      }
       continue;
     }
-    const std::size_t end = pretty.find(']', i);
-    const std::string inside = pretty.substr(i + 1, end - i - 1);
-    if (end == std::string::npos || inside.find_first_of("[{\"") != std::string::npos) {
-      out += pretty[i];
+    if (c == '"') in_string = true;
+    const std::size_t end = c == '[' ? pretty.find(']', i) : std::string::npos;
+    if (end == std::string::npos ||
+        pretty.substr(i + 1, end - i - 1).find_first_of("[{\"") != std::string::npos) {
+      out += c;
       continue;
     }
+    // Numbers only: their lines joined.
     std::string items;
     bool space = false;
-    for (char c : inside) {
-      if (c == ' ' || c == '\n') {
+    for (char d : pretty.substr(i + 1, end - i - 1)) {
+      if (d == ' ' || d == '\n') {
         space = true;
         continue;
       }
       if (space && !items.empty() && items.back() == ',') items += ' ';
       space = false;
-      items += c;
+      items += d;
     }
     out += "[" + items + "]";
     i = end;

@@ -1,5 +1,7 @@
 #include "animkit/io/gltf_sink.h"
 
+#include <utility>
+
 #include "animkit/io/atomic_write.h"
 
 namespace animkit {
@@ -37,8 +39,10 @@ void GltfSink::add(const ClothFrame& frame) {
 }
 
 Result<void> GltfSink::finish(const ClothRun& run, const ClothFrame&) {
+  // The frames are let go whatever happens: a sink kept after its run holds no copy of it.
+  const ClothAnimation animation = std::exchange(animation_, {});
   if (run.divergence) return {};
-  auto bytes = cloth_glb(animation_);
+  auto bytes = cloth_glb(animation);
   if (!bytes) return fail(path_.filename().string() + ": " + bytes.error().message);
   return write_file_atomic(path_, *bytes);
 }

@@ -8,6 +8,7 @@ namespace animkit {
 
 Result<void> ObjSink::begin(const ClothFrame& start, int, double) {
   cloth_ = cloth_obj(start.simulator.model(), start.simulator.state());
+  colliders_.clear();  // a sink may serve one run after another
   if (!start.colliders.empty()) {
     colliders_ = colliders_obj(start.colliders, start.simulator.state().time);
   }

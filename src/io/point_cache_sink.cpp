@@ -37,15 +37,32 @@ Result<void> PointCacheSink::add(const ClothFrame& frame) {
   return {};
 }
 
+void PointCacheSink::abandon() {
+  // The writers remove their temporaries.
+  cloth_.reset();
+  colliders_.reset();
+}
+
 Result<void> PointCacheSink::finish(const ClothRun& run, const ClothFrame&) {
-  if (run.divergence) {
-    // A diverged run keeps no animation: the writers remove their temporaries.
-    cloth_.reset();
-    colliders_.reset();
+  if (run.divergence) {  // a diverged run keeps no animation
+    abandon();
     return {};
   }
-  if (auto ok = cloth_->finish(); !ok) return ok;
-  if (colliders_) return colliders_->finish();
+  if (auto ok = cloth_->finish(); !ok) {
+    abandon();
+    return ok;
+  }
+  cloth_.reset();
+  if (colliders_) {
+    // The pair whole or not at all: cloth.pc2 goes again if colliders.pc2 cannot follow.
+    auto ok = colliders_->finish();
+    colliders_.reset();
+    if (!ok) {
+      std::error_code ignored;
+      std::filesystem::remove(dir_ / options_.cloth_file, ignored);
+      return ok;
+    }
+  }
   return {};
 }
 

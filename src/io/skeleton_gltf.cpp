@@ -7,6 +7,7 @@
 
 #include "animkit/io/atomic_write.h"
 #include "animkit/io/bvh_motion.h"
+#include "animkit/io/cloth_gltf.h"
 #include "glb_builder.h"
 
 namespace animkit {
@@ -73,8 +74,9 @@ std::optional<Error> motion_problem(const SkeletonDesc& skeleton, const Skeletal
   if (motion.frame_count() < 1) return Error{"the motion has no frames"};
   if (motion.local_translations.size() != motion.local_rotations.size())
     return Error{"the motion's rotations and translations differ in number"};
-  if (!(motion.frame_time > 0.0) || !std::isfinite(motion.frame_time))
-    return Error{"the frame time must be a positive number of seconds"};
+  if (!(motion.frame_time >= kMinGltfFrameTime && motion.frame_time <= kMaxGltfFrameTime))
+    return Error{"the frame time must be between 1e-09 and 1e+06 s"};
+  if (motion.frame_count() > 10'000'000) return Error{"the motion has more than 10,000,000 frames"};
   if (!(metres_per_unit > 0.0) || !std::isfinite(metres_per_unit))
     return Error{"metres per unit must be a number > 0"};
   if (skeleton.joint_count() > 65535)

@@ -14,7 +14,7 @@ double rest_leg_length(const Skeleton& skeleton, const BipedLegs& legs) {
     const Vec3& hip = rest.global_positions[leg.hip];
     const Vec3& knee = rest.global_positions[leg.knee];
     const Vec3& ankle = rest.global_positions[leg.ankle];
-    longest = std::max(longest, (knee - hip).norm() + (ankle - knee).norm());
+    longest = std::max(longest, (knee - hip).stableNorm() + (ankle - knee).stableNorm());
   }
   return longest;
 }
@@ -27,7 +27,8 @@ Result<BodyScale> detect_body_scale(const Skeleton& skeleton, const BipedLegs& l
   const LengthUnit* best = nullptr;
   double best_distance = std::numeric_limits<double>::infinity();
   for (const LengthUnit& unit : kBvhLengthUnits) {
-    const double distance = std::abs(std::log(leg * unit.metres / kTypicalLegMetres));
+    // As a sum of logarithms: a leg of 1e-300 units in millimetres must not underflow to 0.
+    const double distance = std::abs(std::log(leg) + std::log(unit.metres / kTypicalLegMetres));
     if (distance < best_distance) {
       best_distance = distance;
       best = &unit;

@@ -23,7 +23,7 @@ class CcdTreeIteration final : public detail::TreeIteration {
                    CcdTreeWorkspace& workspace)
       : skeleton_(skeleton), problem_(problem), ws_(workspace) {}
 
-  // One sweep, children before parents (SPEC.md section 2, "from the joint nearest the end
+  // One sweep, children before parents (docs/how-it-works.md, "from the joint nearest the end
   // effector back to the root", with every effector below the joint taken at once).
   void iterate(SkeletonPose& pose) override {
     const auto& scratch = ws_.scratch;

@@ -1,7 +1,7 @@
 // Behaviour tests of `animkit batch`: jobs run two at a time into their own folders, a broken
 // job is reported without stopping the others, a re-run skips complete results, a folder of
 // scene files is a batch, and a bad jobs file is one line and exit 2. Its speed on two cores is
-// measured by farm-bench, not here (the README's numbers).
+// measured by farm-bench, not here (docs/gltf-and-batches.md has the numbers).
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,5 +1,5 @@
 // Nothing lost, nothing half-written: full disks, concurrent runs, runs that fail part-way,
-// signals and stale temporaries (issue 9). A full disk is simulated with RLIMIT_FSIZE (`ulimit
+// signals and stale temporaries. A full disk is simulated with RLIMIT_FSIZE (`ulimit
 // -f`, SIGXFSZ ignored): every write past the limit fails with EFBIG as it would with ENOSPC,
 // in the CLI and in the ffmpeg it starts.
 #include <fcntl.h>

@@ -19,7 +19,7 @@ import numpy as np
 
 # Debian's Blender 3.4 runs on Debian's NumPy 1.24, which removed the alias np.bool that its
 # glTF importer still uses (io_scene_gltf2/blender/imp/gltf2_blender_mesh.py); the alias is put
-# back for the importer, as the README tells users to.
+# back for the importer, as docs/gltf-and-batches.md tells users to.
 if "bool" not in np.__dict__:
     np.bool = bool
 

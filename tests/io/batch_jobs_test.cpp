@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "../support/temp_files.h"
+#include "animkit/io/batch_run.h"
 
 namespace animkit {
 namespace {
@@ -37,6 +38,10 @@ TEST(BatchJobs, BadListsSayWhatIsWrong) {
        "j.json: jobs[0].args: expected strings"},
       {R"({"jobs": [{"name": "a", "args": ["cloth", "--out=x"]}]})",
        "j.json: jobs[0].args: has --out: the batch gives each job its folder"},
+      {R"({"jobs": [{"name": "logs", "args": ["cloth"]}]})",
+       "j.json: jobs[0].name: 'logs' is the batch's own (its logs/ folder and batch.json)"},
+      {R"({"jobs": [{"name": "batch.json", "args": ["cloth"]}]})",
+       "j.json: jobs[0].name: 'batch.json' is the batch's own"},
       {R"({"jobs": [{"name": ".hidden", "args": ["cloth"]}]})",
        "j.json: jobs[0].name: '.hidden' starts with '.'"},
       {R"({"jobs": [{"name": "a", "args": ["cloth"]}, {"name": "a", "args": ["reach"]}]})",
@@ -68,6 +73,32 @@ TEST(BatchJobs, AFolderOfSceneFilesIsOneClothJobEach) {
                 ": the file's name may hold only letters, digits, '.', '_' and '-' (it names "
                 "the job)");
   EXPECT_FALSE(read_batch_jobs(dir / "missing.json"));
+}
+
+TEST(BatchSummary, ListsOnlyTheJobsThatEnded) {
+  // A batch stopped while "b" runs: its summary must not say "b" is done, or a resumed batch
+  // would skip it.
+  std::vector<BatchJobResult> results(2);
+  results[0] = {.name = "a",
+                .args = {"cloth"},
+                .status = BatchStatus::ok,
+                .exit_code = 0,
+                .started = 0.0,
+                .finished = 1.0,
+                .error = "",
+                .ended = true};
+  results[1] = {.name = "b",
+                .args = {"cloth"},
+                .status = BatchStatus::ok,
+                .exit_code = 0,
+                .started = 0.5,
+                .finished = 0.0,
+                .error = "",
+                .ended = false};
+  const std::string json = batch_summary_json(results, "out");
+  EXPECT_NE(json.find("\"name\": \"a\""), std::string::npos) << json;
+  EXPECT_EQ(json.find("\"name\": \"b\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"ok\": 1"), std::string::npos) << json;
 }
 
 }  // namespace

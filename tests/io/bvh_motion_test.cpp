@@ -1,4 +1,4 @@
-// BVH clips as SkeletalMotion and back (issue 12), on the CMU walk (skipped without the data).
+// BVH clips as SkeletalMotion and back, on the CMU walk (skipped without the data).
 #pragma GCC diagnostic ignored "-Wuninitialized"  // GCC 12 AVX-512 false positive (dense Eigen)
 #include "animkit/io/bvh_motion.h"
 

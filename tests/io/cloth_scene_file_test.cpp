@@ -105,7 +105,7 @@ TEST(ClothSceneFile, ReadsTheVelocityTolerance) {
   EXPECT_EQ(std::get<NewtonSettings>(scene->simulation.integrator).velocity_tolerance, 1e-3);
 }
 
-TEST(ClothSceneFile, TheREADMEsExampleSceneReadsAndBuilds) {
+TEST(ClothSceneFile, TheDocumentedExampleSceneReadsAndBuilds) {
   const auto scene = read_cloth_scene(ANIMKIT_SOURCE_DIR "/docs/scenes/pillow-drop.json");
   ASSERT_TRUE(scene) << scene.error().message;
   EXPECT_EQ(scene->colliders.size(), 2u);

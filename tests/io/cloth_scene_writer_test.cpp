@@ -44,7 +44,7 @@ TEST(ClothSceneWriter, KeyframesAndCustomMaterialsAreWritten) {
   ClothWorldDesc scene = cotton_sheet_world(4, 1.0, 0.5);
   std::get<GridClothOptions>(scene.cloth).material->stretch = 777.0;  // no preset any more
   ColliderDesc lift;
-  lift.name = "lift";
+  lift.name = "lift [left, \"inner\"]";  // brackets, a comma and quotes in a name
   lift.shape = BoxShape{Vec3(0.1, 0.05, 0.1)};
   lift.motion = KeyframedMotion{{{.time = 0.0, .position = Vec3(0, 0.1, 0)},
                                  {.time = 1.0,
@@ -57,6 +57,7 @@ TEST(ClothSceneWriter, KeyframesAndCustomMaterialsAreWritten) {
   EXPECT_NE(json->find("\"keyframes\""), std::string::npos) << *json;
   const auto read = parse_cloth_scene(*json, "scene.json", ".");
   ASSERT_TRUE(read) << read.error().message;
+  EXPECT_EQ(read->colliders[0].name, lift.name);
   const auto& keys = std::get<KeyframedMotion>(read->colliders[0].motion).keyframes;
   ASSERT_EQ(keys.size(), 2u);
   EXPECT_TRUE(keys[1].rotation.isApprox(Quat(Eigen::AngleAxisd(0.5, Vec3::UnitY())), 1e-15));

@@ -1,7 +1,7 @@
 // Reading pictures from files: broken files (cut short, damaged, lying headers, huge sizes)
 // are clear errors naming the file, never a picture with invented pixels. Each file is made
-// here from known pixels, then cut or damaged. (All but the huge sizes went wrong with stb_image:
-// see issue 9.)
+// here from known pixels, then cut or damaged. (All but the huge sizes went wrong with
+// stb_image, which the readers replaced.)
 #include "animkit/io/image_input.h"
 
 #include <gtest/gtest.h>

@@ -145,6 +145,11 @@ TEST(SkeletonGltf, BadInputIsRefused) {
             "cannot write glTF: the motion has 3 joints and the skeleton 4");
   EXPECT_EQ(skeleton_glb(leg.skeleton, make_motion(4, 0, 1.0 / 30.0), 1.0).error().message,
             "cannot write glTF: the motion has no frames");
+  // Keyframe times must be distinct, finite floats.
+  for (double frame_time : {1e-50, 1e39}) {
+    EXPECT_EQ(skeleton_glb(leg.skeleton, make_motion(4, 2, frame_time), 1.0).error().message,
+              "cannot write glTF: the frame time must be between 1e-09 and 1e+06 s");
+  }
   BvhClip clip;
   clip.skeleton = leg.skeleton;
   clip.channels.resize(4);

@@ -46,17 +46,34 @@ TEST(BodyScale, ABodyNoUnitMakesHumanIsRefused) {
             "1.42 m in centimetres; a person's are about 0.8 m)");
 }
 
-TEST(BodyScale, LegsOfNoLengthAreRefused) {
+// A biped whose thighs and shins are `bone` long.
+Skeleton legs_of_length(double bone) {
   SkeletonDesc desc;
   desc.add_joint("Hips", -1, Vec3::Zero());
   for (const char* side : {"Left", "Right"}) {
     const int hip = desc.add_joint(std::string(side) + "Hip", 0, Vec3::Zero());
-    const int knee = desc.add_joint(std::string(side) + "Knee", hip, Vec3::Zero());
-    desc.add_joint(std::string(side) + "Ankle", knee, Vec3::Zero());
+    const int knee = desc.add_joint(std::string(side) + "Knee", hip, Vec3(0, -bone, 0));
+    desc.add_joint(std::string(side) + "Ankle", knee, Vec3(0, -bone, 0));
   }
-  const Skeleton skeleton = build_skeleton(desc).value();
+  return build_skeleton(desc).value();
+}
+
+TEST(BodyScale, LegsOfNoLengthAreRefused) {
+  const Skeleton skeleton = legs_of_length(0.0);
   EXPECT_EQ(detect_body_scale(skeleton, find_biped_legs(skeleton).value()).error().message,
             "cannot tell the units of the skeleton: its legs have no length at rest");
+}
+
+TEST(BodyScale, TinyAndHugeLegsAreRefusedWithoutAFloatingPointTrap) {
+  // (The tests trap division by zero and overflow: log(1e-300 x 0.001) would divide by zero.)
+  for (double bone : {1e-300, 1e8}) {
+    const Skeleton skeleton = legs_of_length(bone);
+    const auto body = detect_body_scale(skeleton, find_biped_legs(skeleton).value());
+    ASSERT_FALSE(body);
+    EXPECT_EQ(body.error().message.rfind("cannot tell the units of the skeleton: its legs are ", 0),
+              0u)
+        << body.error().message;
+  }
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Foot locking's settings and contact detection (issue 12) on made-up ankle trails.
+// Foot locking's settings and contact detection on made-up ankle trails.
 #pragma GCC diagnostic ignored "-Wuninitialized"  // GCC 12 AVX-512 false positive (dense Eigen)
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Foot locking (issue 12): legs, knee flexion and the lock on the CMU walk 131_01 (skipped
+// Foot locking: legs, knee flexion and the lock on the CMU walk 131_01 (skipped
 // when the data is absent). Settings and contact detection: foot_contacts_test.cpp.
 #pragma GCC diagnostic ignored "-Wuninitialized"  // GCC 12 AVX-512 false positive (dense Eigen)
 #include "animkit/kinematics/foot_lock.h"

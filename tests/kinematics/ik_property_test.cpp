@@ -1,6 +1,6 @@
 // Property test: random valid chains and targets through every IK solver, checking what must
 // hold for any input: finite results, bone lengths kept, unit rotations, honest convergence
-// and reachability flags (issue 9, "keep finding them").
+// and reachability flags.
 #include <gtest/gtest.h>
 
 #include <cmath>

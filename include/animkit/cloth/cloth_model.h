@@ -1,5 +1,5 @@
 #pragma once
-// Mass-spring cloth (SPEC.md section 4): an editable description, the immutable model built
+// Mass-spring cloth (docs/implicit-step.md): an editable description, the immutable model built
 // from it once, and the state (positions, velocities) that integrators advance.
 #include <array>
 #include <optional>

@@ -1,7 +1,7 @@
 #pragma once
 // A cloth run: the per-frame loop every shell shares (step, stop on divergence, hand each frame
 // to the sinks: the output formats, a progress line, a caller's function), and the aggregate
-// numbers of a run (the summary the CLI writes and the README quotes).
+// numbers of a run (the summary the CLI writes and the documentation quotes).
 #include <functional>
 #include <optional>
 #include <span>
@@ -62,6 +62,10 @@ class ClothSink {
   /// After the last step, with every report and, for a diverged run, its message; `last` is
   /// the last frame reached (the state before the step that diverged).
   virtual Result<void> finish(const ClothRun& run, const ClothFrame& last) = 0;
+  /// When the run fails instead (a sink's error, a caller's stop): drop what was kept (open
+  /// temporaries, frames in memory) now, not when the sink is destroyed, which a caller holding
+  /// it (Python) may never do.
+  virtual void abandon() {}
 };
 
 /// Called after every step with the frame number (1-based), the simulator in its new state and
@@ -85,7 +89,7 @@ class CallbackSink final : public ClothSink {
 /// Advances the world's simulator by `frames` steps of dt seconds, handing the start, every
 /// step and the end to each sink in order. A diverged step ends the run (its message in
 /// ClothRun::divergence, not an error; the sinks still finish); a failing sink ends it with
-/// that sink's error, and the sinks are not finished (their temporaries go with them).
+/// that sink's error, and every sink is abandoned instead of finished (nothing is written).
 Result<ClothRun> run_cloth(ClothWorld& world, int frames, double dt,
                            std::span<ClothSink* const> sinks);
 

@@ -44,7 +44,7 @@ class ClothSimulator {
 
   /// Adds an energy term to every later step's potential (energy_term.h): contact, attachments,
   /// force fields. Newton's integrators take any term; VBD and local/global refuse with a
-  /// message (see the README's stiff-cloth section), as does explicit Euler.
+  /// message (see docs/stiff-cloth.md), as does explicit Euler.
   Result<void> add_energy_term(std::shared_ptr<EnergyTerm> term);
 
   /// Forces (3N, world units, particle-major like the state) added in every later step, held

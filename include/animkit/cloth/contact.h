@@ -13,7 +13,7 @@
 //
 // Why IPC and not Offset Geometric Contact (Chen et al. 2025): OGC bounds each vertex's
 // displacement inside VBD-style local solves, and on this project's stiff cloth VBD does not
-// reach 1e-4 relative gradient at all (README, stiff cloth: 0% of cotton's steps within 1000
+// reach 1e-4 relative gradient at all (docs/stiff-cloth.md: 0% of cotton's steps within 1000
 // sweeps), where Newton with multigrid converges every step; IPC rides on that Newton.
 #include <array>
 #include <cstdint>

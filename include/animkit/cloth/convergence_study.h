@@ -1,5 +1,5 @@
 #pragma once
-// The convergence study of the implicit integrators (issue 10): every solver advances the same
+// The convergence study of the implicit integrators: every solver advances the same
 // cloth from the same state for the same steps, recording after each of its iterations the
 // gradient norm of the incremental potential relative to its value at the prediction y, and
 // the wall time since the substep began. All of them stop on the same test (integrator_settings.h),

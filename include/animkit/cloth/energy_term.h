@@ -2,7 +2,7 @@
 // An extra energy term of the implicit step's potential g (e.g. the contact barriers of issue
 // 11, an attachment, a user's own force field): g(x) = inertia + springs + bends + dashpots +
 // sum of terms. Newton's integrators take any term (ClothSimulator::add_energy_term); the
-// others say why they cannot (see the README's stiff-cloth section).
+// others say why they cannot (see docs/stiff-cloth.md).
 #include <Eigen/Core>
 #include <string_view>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// Explicit (symplectic) Euler, the lab's starting point (SPEC.md section 4): per substep of
+// Explicit (symplectic) Euler, the lab's starting point (docs/implicit-step.md): per substep of
 // length h, v += h a(x, v), then x += h v. The lab runs 1000 substeps per frame to stay stable.
 #include <Eigen/Core>
 #include <memory>

@@ -1,5 +1,5 @@
 #pragma once
-// Implicit Euler for the mass-spring cloth, exactly as SPEC.md section 4 poses it: minimize
+// Implicit Euler for the mass-spring cloth, exactly as docs/implicit-step.md poses it: minimize
 // g(x) (see incremental_potential.h) by Newton's method from x = y with a backtracking
 // (Armijo) line search, then v = (x - x_n) / h. A step is a recipe of named stages:
 // predict y -> Newton iterations (gradient, Hessian, linear solve, line search) -> velocities.

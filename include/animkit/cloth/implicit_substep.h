@@ -1,6 +1,6 @@
 #pragma once
 // The stages every implicit integrator shares around its own minimization of g: the stopping
-// test (SPEC.md section 4, the same for every solver so their results compare one to one) and
+// test (docs/implicit-step.md, the same for every solver so their results compare one to one) and
 // the velocity update. Newton, VBD and any later solver call these instead of repeating them.
 #include <Eigen/Core>
 #include <chrono>

@@ -1,5 +1,5 @@
 #pragma once
-// Implicit Euler as energy minimization (SPEC.md section 4). With h the step, M the masses,
+// Implicit Euler as energy minimization (docs/implicit-step.md). With h the step, M the masses,
 // x_n, v_n the state at the step's start and f_ext = M g the gravity:
 //   y    = x_n + h v_n + h^2 M^-1 f_ext
 //   g(x) = 1/(2h^2) |x - y|_M^2 + E(x) + D(x)

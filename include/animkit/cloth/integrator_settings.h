@@ -46,7 +46,7 @@ enum class HessianProjection {
   always,
 };
 
-/// Implicit Euler by Newton's method with a backtracking line search (SPEC.md section 4).
+/// Implicit Euler by Newton's method with a backtracking line search (docs/implicit-step.md).
 struct NewtonSettings {
   LinearSolverKind linear_solver = LinearSolverKind::pcg;
   /// Stops when |grad g| <= tolerance * |grad g at x = y|. (0, 1).

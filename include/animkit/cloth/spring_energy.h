@@ -1,6 +1,6 @@
 #pragma once
 // One spring's elastic energy and its first and second derivatives, kept together so they are
-// tested together against finite differences (SPEC.md section 4).
+// tested together against finite differences (docs/implicit-step.md).
 //
 // For particles a, b with d = x_a - x_b, l = |d|, u = d / l, stiffness k and rest length L:
 //   E       = 1/2 k (l - L)^2

@@ -1,6 +1,6 @@
 #pragma once
 // The small shared vocabulary of animkit: double-precision Eigen vectors and quaternions.
-// Solvers use double: a float CCD stalls on the lab's own targets (see SPEC.md, section 2).
+// Solvers use double: a float CCD stalls on the lab's own targets (docs/lab-questions.md).
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 

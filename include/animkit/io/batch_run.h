@@ -31,6 +31,9 @@ struct BatchJobResult {
   /// A failed job's error: its last "animkit: error:" line, else its last line, else why it
   /// could not start.
   std::string error;
+  /// Whether the job has ended (or was skipped): the summary lists only these, so a batch
+  /// stopped while a job runs does not take that job for done when it resumes.
+  bool ended = false;
 };
 
 struct BatchSettings {
@@ -49,8 +52,8 @@ Result<std::vector<BatchJobResult>> run_batch(std::span<const BatchJob> jobs,
                                               const BatchSettings& settings);
 
 /// OUT/batch.json: {"jobs": [{"name", "args", "status", "exit_code", "seconds", "started",
-/// "finished", "error", "folder"}...], "ok", "failed", "skipped", "wall_seconds",
-/// "job_seconds"}.
+/// "finished", "error", "folder"}...] (the jobs that have ended), "ok", "failed", "skipped",
+/// "wall_seconds", "job_seconds"}.
 std::string batch_summary_json(std::span<const BatchJobResult> results,
                                const std::filesystem::path& out);
 

@@ -38,6 +38,9 @@ struct ClothAnimation {
   }
 };
 
+/// The frame times a .glb's keyframes hold as distinct, finite float seconds over 65,535 frames.
+inline constexpr double kMinGltfFrameTime = 1e-9, kMaxGltfFrameTime = 1e6;
+
 /// Most frames a cloth.glb holds: one morph target each, and a weight table of frames^2 entries
 /// whose indices must fit 32 bits.
 inline constexpr int kMaxGltfClothFrames = 65535;
@@ -47,7 +50,8 @@ inline constexpr int kMaxGltfClothFrames = 65535;
 /// so that a long simulation does not end in a file that cannot be written.
 std::optional<Error> cloth_glb_fits(int vertex_count, long long frames);
 
-/// The .glb bytes. Errors: no frames, sizes that disagree, a file past glTF's 4 GiB.
+/// The .glb bytes. Errors: no frames, sizes that disagree, a frame time outside
+/// kMinGltfFrameTime..kMaxGltfFrameTime, a file past glTF's 4 GiB.
 Result<std::string> cloth_glb(const ClothAnimation& animation);
 
 }  // namespace animkit

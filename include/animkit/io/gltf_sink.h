@@ -18,6 +18,7 @@ class GltfSink final : public ClothSink {
   Result<void> begin(const ClothFrame& start, int frames, double dt) override;
   Result<void> frame(const ClothFrame& frame) override;
   Result<void> finish(const ClothRun& run, const ClothFrame& last) override;
+  void abandon() override { animation_ = {}; }
 
  private:
   void add(const ClothFrame& frame);

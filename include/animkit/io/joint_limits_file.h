@@ -1,5 +1,5 @@
 #pragma once
-// Joint limits as a JSON file keyed by joint name (issue 12). Angles in degrees, axes in the
+// Joint limits as a JSON file keyed by joint name. Angles in degrees, axes in the
 // joint's rest frame (any non-zero length; normalized on reading):
 //
 // {

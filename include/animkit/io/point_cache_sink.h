@@ -31,6 +31,7 @@ class PointCacheSink final : public ClothSink {
   Result<void> begin(const ClothFrame& start, int frames, double dt) override;
   Result<void> frame(const ClothFrame& frame) override;
   Result<void> finish(const ClothRun& run, const ClothFrame& last) override;
+  void abandon() override;
 
  private:
   Result<void> add(const ClothFrame& frame);

@@ -1,6 +1,6 @@
 #pragma once
 // The files `animkit reach --out DIR` writes besides reached.bvh: metrics.json (names are a
-// contract, README "animkit reach") and reach.png, the skeleton before and after the reach seen
+// contract, docs/reach.md) and reach.png, the skeleton before and after the reach seen
 // from the front and from the side, drawn without OpenGL (line_plot.h).
 #include <filesystem>
 #include <span>

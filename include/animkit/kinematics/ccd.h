@@ -5,7 +5,7 @@
 
 namespace animkit {
 
-/// Cyclic coordinate descent (SPEC.md section 2). One iteration visits the joints from the one
+/// Cyclic coordinate descent (docs/how-it-works.md). One iteration visits the joints from the one
 /// nearest the end effector back to the root; each turns by the shortest arc taking
 /// (joint -> end effector) onto (joint -> target), as if forward kinematics were re-run from
 /// it (the sweep carries only what later joints read; see ccd.cpp).

@@ -1,6 +1,6 @@
 #pragma once
-// Cyclic coordinate descent over skeleton trees with several end effectors (issue 12): the
-// lab's CCD (SPEC.md section 2) with the shortest arc replaced, where a joint carries several
+// Cyclic coordinate descent over skeleton trees with several end effectors: the
+// lab's CCD (docs/how-it-works.md) with the shortest arc replaced, where a joint carries several
 // effectors, by the weighted best-fit rotation about the joint. Joint limits are enforced at
 // every joint visit. Signature shared by every tree solver (tree_ik.h).
 #include <optional>

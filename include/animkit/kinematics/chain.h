@@ -1,5 +1,5 @@
 #pragma once
-// Kinematic chain (SPEC.md section 1): a description a user edits, the immutable model built
+// Kinematic chain (docs/how-it-works.md): a description a user edits, the immutable model built
 // from it once, and the pose that solvers change. Many poses can share one Chain.
 #include <optional>
 #include <span>

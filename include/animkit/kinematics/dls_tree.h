@@ -1,5 +1,5 @@
 #pragma once
-// Jacobian damped least squares on skeleton trees (issue 12), with several effectors, each with
+// Jacobian damped least squares on skeleton trees, with several effectors, each with
 // a position target, an optional orientation target and a weight, and joint limits enforced
 // inside every iteration. Two step rules share the iteration:
 //   DLS  (Wampler 1986; Buss 2004 "Introduction to inverse kinematics", eq. 11):

@@ -58,7 +58,7 @@ Result<DrawingRun> run_drawing(const Chain& chain, std::span<const Vec3> targets
 /// per stroke (a new one at each pen-up and at each lap, where the arm is reset).
 std::vector<std::vector<Vec3>> drawn_strokes(std::span<const DrawingFrame> frames);
 
-/// Aggregate numbers of a run (the metrics the CLI writes and the README quotes).
+/// Aggregate numbers of a run (the metrics the CLI writes and docs/results.md quotes).
 struct DrawingSummary {
   int targets = 0;                  ///< frames solved
   double converged_fraction = 0.0;  ///< frames with error <= tolerance, in [0, 1]

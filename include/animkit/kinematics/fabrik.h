@@ -5,7 +5,7 @@
 
 namespace animkit {
 
-/// FABRIK, Aristidou & Lasenby 2011 (SPEC.md section 2): backward and forward reaching passes
+/// FABRIK, Aristidou & Lasenby 2011 (docs/how-it-works.md): backward and forward reaching passes
 /// on joint positions until the end effector is within tolerance, then each joint's rotation is
 /// recovered as the shortest arc from its rest bone direction to its new bone direction, and
 /// forward kinematics is re-run, so the pose's rotations reproduce its positions. Bone twist is

@@ -1,5 +1,5 @@
 #pragma once
-// FABRIK for skeleton trees with several end effectors (issue 12), after Aristidou & Lasenby
+// FABRIK for skeleton trees with several end effectors, after Aristidou & Lasenby
 // 2011, "FABRIK: a fast, iterative solver for the inverse kinematics problem", section 5
 // (multiple end effectors): sub-bases placed at the centroid of what their branches ask for.
 // Joint limits are enforced inside every forward pass, orientation targets turn the effector

@@ -1,5 +1,5 @@
 #pragma once
-// Foot locking of a biped's motion clip (issue 12): find where each foot is planted (low and
+// Foot locking of a biped's motion clip: find where each foot is planted (low and
 // slow), pin its ankle there with two-bone leg IK (knees bending forward, within a flexion
 // range), blend smoothly into and out of each contact, and keep the rest of the motion as it
 // was. Positions are in metres (scale the clip when reading it), Y is up; sliding and errors

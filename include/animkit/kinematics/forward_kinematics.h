@@ -3,7 +3,7 @@
 
 namespace animkit {
 
-/// Forward kinematics (SPEC.md section 1) from joint `start` on; 0 recomputes everything.
+/// Forward kinematics (docs/how-it-works.md) from joint `start` on; 0 recomputes everything.
 ///   global_rotation[0] = local_rotation[0],  global_position[0] = local_offset[0]
 ///   global_rotation[i] = global_rotation[i-1] * local_rotation[i]
 ///   global_position[i] = global_position[i-1] + global_rotation[i-1] * local_offset[i]

@@ -1,5 +1,5 @@
 #pragma once
-// A character reaches a hand to a target while both feet stay planted (issue 12's `animkit
+// A character reaches a hand to a target while both feet stay planted (`animkit
 // reach`): one tree IK solve with three effectors, the hand at the target and each foot pinned
 // where it stands, the root held where and how it is (roots never translate, and a
 // zero-range limit keeps every solver from turning it), the other joints within

@@ -1,5 +1,5 @@
 #pragma once
-// Joint limits (issue 12) as standalone math on a joint's local rotation relative to its rest
+// Joint limits as standalone math on a joint's local rotation relative to its rest
 // rotation: hinge joints (one axis, an angle range) and ball joints (a swing cone about the
 // bone plus a twist range about it), by the swing-twist decomposition q = swing * twist.
 // Solvers call constrain() inside their iterations; nothing here knows about skeletons.

@@ -1,5 +1,5 @@
 #pragma once
-// A motion clip as plain data (issue 12): every frame's local rotations and translations of a
+// A motion clip as plain data: every frame's local rotations and translations of a
 // skeleton, in flat frame-major arrays, so whole-clip jobs (foot locking) read and write frames
 // without allocating. File formats convert to and from it (io/bvh_motion.h).
 #include <vector>

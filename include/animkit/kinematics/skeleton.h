@@ -1,5 +1,5 @@
 #pragma once
-// Skeletons as trees (issue 12): a description a user or a file reader fills in, the immutable
+// Skeletons as trees: a description a user or a file reader fills in, the immutable
 // model built from it once (flat arrays, parents before children), and the pose that FK fills.
 // The lab's chain is a skeleton with one branch (skeleton_desc_from_chain).
 #include <optional>
@@ -95,7 +95,7 @@ SkeletonPose skeleton_rest_pose(const Skeleton& skeleton);
 /// position zero: scratch that a clip's frames are read into (SkeletalMotion::read_frame).
 SkeletonPose identity_pose(int joint_count);
 
-/// Forward kinematics over the tree in one loop, parents before children (SPEC.md section 1
+/// Forward kinematics over the tree in one loop, parents before children (docs/how-it-works.md
 /// with "i - 1" read as "parent(i)"):
 ///   root:  global_rotation = local_rotation,  global_position = local_translation
 ///   other: global_rotation[i] = global_rotation[p] * local_rotation[i]

@@ -1,5 +1,5 @@
 #pragma once
-// What every IK solver on a skeleton tree shares (issue 12): effectors with their targets, the
+// What every IK solver on a skeleton tree shares: effectors with their targets, the
 // joint limits the solver enforces inside its iterations, and the result. FABRIK for trees,
 // CCD over trees and damped least squares take the same arguments in the same order:
 //

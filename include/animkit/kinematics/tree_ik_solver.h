@@ -1,5 +1,5 @@
 #pragma once
-// The registry of IK solvers on skeleton trees (issue 12): one list that the viewer's menu,
+// The registry of IK solvers on skeleton trees: one list that the viewer's menu,
 // the CLI's choices and parametrized tests iterate, and one call that runs the solver a kind
 // names (what a caller that lets its user pick the solver holds, instead of a switch over four
 // solve functions). Each solver keeps its own settings and workspace types (fabrik_tree.h,

@@ -1,5 +1,5 @@
 #pragma once
-// The analytic two-bone solver for a limb (hip-knee-ankle, shoulder-elbow-wrist), issue 12:
+// The analytic two-bone solver for a limb (hip-knee-ankle, shoulder-elbow-wrist):
 // the law of cosines places the middle joint in the plane of the root, the target and a pole
 // target (where the knee or elbow should point), on the pole's side. Pure math on world
 // positions; the caller applies the two rotations to its skeleton (and may constrain them

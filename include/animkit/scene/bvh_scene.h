@@ -1,5 +1,5 @@
 #pragma once
-// The interactive motion-capture scene (issue 12): a skeleton clip played, paused and
+// The interactive motion-capture scene: a skeleton clip played, paused and
 // scrubbed; any joint dragged to a target and held there by a tree IK solver while the rest
 // of the body follows the clip (feet optionally pinned where the clip puts them); the clip
 // swapped for its foot-locked version, computed once; and the ankles' trails before and
@@ -24,7 +24,7 @@ struct BvhSceneOptions {
   /// CCD by default: on a captured body reaching with a hand it turns the arm and leaves the
   /// spine nearly as captured, where DLS bends every spine joint (its least-norm step favours
   /// joints far from the hand) and FABRIK twists the lower back and chest against each other
-  /// (the README has the measured angles).
+  /// (docs/skeletons.md has the measured angles).
   TreeIkSolverKind solver = TreeIkSolverKind::ccd;
   FootLockSettings foot_lock;  ///< how the foot-locked clip is made (metres, Y up)
   bool foot_locked = false;    ///< start on the foot-locked clip (when it can be made)

@@ -1,5 +1,5 @@
 #pragma once
-// The lab's built-in target trajectories (SPEC.md section 3), on the plane y = 0, exactly as
+// The lab's built-in target trajectories (docs/drawings.md), on the plane y = 0, exactly as
 // the lab's starter code samples them (same counts, same index splits between edges).
 #include <optional>
 #include <span>

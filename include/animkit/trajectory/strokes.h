@@ -1,5 +1,5 @@
 #pragma once
-// Drawings made of strokes (SPEC.md section 3): polylines drawn with the pen down, in the
+// Drawings made of strokes (docs/drawings.md): polylines drawn with the pen down, in the
 // drawing's own 2D frame (u to the right, v up, as in a picture or a glyph), and the tools to
 // sample them evenly and measure how evenly they are sampled.
 #include <Eigen/Core>

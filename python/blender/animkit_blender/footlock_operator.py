@@ -122,7 +122,11 @@ def lock_armature(context, obj, options, report=None):
     started = time.perf_counter()
     scale = get("scale")
     scale_source = "given"
-    if get("detect_scale", True):
+    # Told from the legs unless a scale is given: the operator's Detect scale, or, for a dict
+    # of options, no "scale" in it.
+    detect = (options.get("detect_scale", "scale" not in options) if isinstance(options, dict)
+              else options.detect_scale)
+    if detect:
         names, parents, offsets = armature_motion.ArmatureMapping(obj, 1.0).skeleton_arrays()
         scale, unit, leg = animkit.body_scale(animkit.Skeleton(names, parents, offsets), legs)
         scale_source = f"detected: {unit}, legs {leg:.3g} units long"
