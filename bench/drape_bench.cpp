@@ -125,13 +125,33 @@ void report_strain(benchmark::State& state, std::array<double, 2> strain) {
 struct Variant {
   double velocity_tolerance = 0.0;  ///< NewtonSettings::velocity_tolerance (0: off)
   std::optional<animkit::BarrierHessian> hessian = std::nullopt;  ///< ContactSettings::hessian
+  int max_iterations = 0;       ///< NewtonSettings::max_iterations (0: the scene's)
+  double linear_forcing = 0.0;  ///< NewtonSettings::linear_forcing
+  /// Also steps the scene's own solver from every state the variant reached and reports how
+  /// far apart the two end (quality against the reference, from the same states).
+  bool compare = false;
 };
+
+// The largest distance between the two solvers' particles, m.
+double max_distance(const animkit::ClothState& a, const animkit::ClothState& b) {
+  return (a.positions - b.positions)
+      .reshaped(3, a.positions.size() / 3)
+      .colwise()
+      .norm()
+      .maxCoeff();
+}
 
 void animkit_drape(benchmark::State& state, int particles, int frames, Variant variant = {}) {
   animkit::ClothWorldDesc desc = animkit::bench::drape_world(particles, frames);
   std::get<animkit::NewtonSettings>(desc.simulation.integrator).velocity_tolerance =
       variant.velocity_tolerance;
   if (variant.hessian) desc.contact.hessian = *variant.hessian;
+  const animkit::ClothWorldDesc reference_desc = animkit::bench::drape_world(particles, frames);
+  std::get<animkit::NewtonSettings>(desc.simulation.integrator).linear_forcing =
+      variant.linear_forcing;
+  if (variant.max_iterations > 0)
+    std::get<animkit::NewtonSettings>(desc.simulation.integrator).max_iterations =
+        variant.max_iterations;
   const auto& grid = std::get<animkit::GridClothOptions>(desc.cloth);
   const animkit::bench::DrapeParts parts = animkit::bench::drape_parts(desc);
   for (auto _ : state) {
@@ -145,11 +165,19 @@ void animkit_drape(benchmark::State& state, int particles, int frames, Variant v
     const animkit::Collider& ball = world->colliders.front();
     const TriangleMesh ball_surface{ball.world_vertices(), ball.model().surface.triangles};
     TriangleMesh cloth{{}, sim.model().triangles};
-    std::vector<double> ms, cpu;
+    std::vector<double> ms, cpu, apart;
     double newton = 0, cg = 0, converged = 0;
     Audit audit;
+    std::optional<animkit::ClothWorld> reference;
+    if (variant.compare) reference.emplace(*animkit::build_cloth_world(reference_desc));
     state.ResumeTiming();
     for (int frame = 1; frame <= desc.frames; ++frame) {
+      if (reference) {
+        state.PauseTiming();
+        (void)reference->simulator.set_state(sim.state());
+        (void)reference->simulator.step(desc.time_step);
+        state.ResumeTiming();
+      }
       const double cpu0 = cpu_ms();
       const auto report = sim.step(desc.time_step);
       const double cpu1 = cpu_ms();
@@ -167,6 +195,10 @@ void animkit_drape(benchmark::State& state, int particles, int frames, Variant v
       for (int i = 0; i < sim.model().particle_count(); ++i)
         cloth.vertices[i] = sim.state().position(i);
       audit.frame(cloth, ball_surface, parts);
+      if (reference) apart.push_back(max_distance(sim.state(), reference->simulator.state()));
+      std::fprintf(
+          stderr, "%s",
+          reference ? ("apart " + std::to_string(1e3 * apart.back()) + " mm; ").c_str() : "");
       std::fprintf(stderr,
                    "animkit %dx%d frame %d/%d: %.1f ms (cpu %.1f), %d Newton, %d CG, "
                    "|dx|/h %.2g m/s, %d backtracks, %d lagging passes, ms: hessian %.0f, "
@@ -185,6 +217,11 @@ void animkit_drape(benchmark::State& state, int particles, int frames, Variant v
     report_times(state, ms, cpu);
     state.counters["newton"] = newton / steps;
     state.counters["cg"] = cg / steps;
+    if (!apart.empty()) {
+      std::sort(apart.begin(), apart.end());
+      state.counters["apart_mm_median"] = 1e3 * apart[apart.size() / 2];
+      state.counters["apart_mm_max"] = 1e3 * apart.back();
+    }
     state.counters["converged"] = converged / steps;
     audit.report(state);
     report_strain(state, grid_axis_strain(cloth.vertices, grid.cells, grid.size / grid.cells));
@@ -253,6 +290,38 @@ int main(int argc, char** argv) {
   // The choices that trade IPC's defaults for speed (NewtonSettings::velocity_tolerance,
   // ContactSettings::hessian), alone and together.
   const std::pair<const char*, Variant> variants[] = {
+      {"gn_vel_cap5",
+       {.velocity_tolerance = 1e-3,
+        .hessian = animkit::BarrierHessian::gauss_newton,
+        .max_iterations = 5,
+        .compare = true}},
+      {"gn_vel_cap10",
+       {.velocity_tolerance = 1e-3,
+        .hessian = animkit::BarrierHessian::gauss_newton,
+        .max_iterations = 10,
+        .compare = true}},
+      {"gn_vel_cap20",
+       {.velocity_tolerance = 1e-3,
+        .hessian = animkit::BarrierHessian::gauss_newton,
+        .max_iterations = 20,
+        .compare = true}},
+      {"gn_vel_cap10_f01",
+       {.velocity_tolerance = 1e-3,
+        .hessian = animkit::BarrierHessian::gauss_newton,
+        .max_iterations = 10,
+        .linear_forcing = 0.1,
+        .compare = true}},
+      {"gn_vel_cap20_f01",
+       {.velocity_tolerance = 1e-3,
+        .hessian = animkit::BarrierHessian::gauss_newton,
+        .max_iterations = 20,
+        .linear_forcing = 0.1,
+        .compare = true}},
+      {"gn_vel_f01",
+       {.velocity_tolerance = 1e-3,
+        .hessian = animkit::BarrierHessian::gauss_newton,
+        .linear_forcing = 0.1,
+        .compare = true}},
       {"velocity_stop", {.velocity_tolerance = 1e-3}},
       {"gauss_newton", {.hessian = animkit::BarrierHessian::gauss_newton}},
       {"gauss_newton/velocity_stop",

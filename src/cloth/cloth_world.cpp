@@ -106,8 +106,9 @@ Result<ClothWorld> build_cloth_world(const ClothWorldDesc& desc) {
 Result<ClothWorld> build_cloth_world(const ClothWorldDesc& desc, const ClothDesc& cloth) {
   if (auto error = desc.validate()) return fail(error->message);
   SimulationOptions options = desc.simulation;
-  if (auto* newton = std::get_if<NewtonSettings>(&options.integrator); newton && desc.has_contact())
-    newton->max_iterations = std::max(newton->max_iterations, kContactNewtonIterations);
+  if (auto* newton = std::get_if<NewtonSettings>(&options.integrator);
+      newton && desc.has_contact() && newton->max_iterations == NewtonSettings{}.max_iterations)
+    newton->max_iterations = kContactNewtonIterations;
   auto sim = ClothSimulator::create(cloth, options);
   if (!sim) return fail(sim.error().message);
 

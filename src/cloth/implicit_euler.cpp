@@ -34,6 +34,9 @@ std::optional<Error> NewtonSettings::validate() const {
       velocity_tolerance >= 1.0) {
     return Error{"velocity tolerance must be in [0, 1), got " + format_number(velocity_tolerance)};
   }
+  if (!std::isfinite(linear_forcing) || linear_forcing < 0.0 || linear_forcing >= 1.0) {
+    return Error{"linear forcing must be in [0, 1), got " + format_number(linear_forcing)};
+  }
   if (max_line_search_steps < 1) {
     return Error{"max line-search steps must be at least 1, got " +
                  std::to_string(max_line_search_steps)};
@@ -107,7 +110,8 @@ bool ImplicitEuler::solve_newton_system(double relative_gradient, IterationRecor
   // stiff cloth solving past it costs more CG iterations than the Newton iteration it saves.
   const double progress = 0.01 * std::clamp(relative_gradient, 1e-3, 0.5);
   const double goal = 0.5 * options_.tolerance / relative_gradient;
-  const double forcing = std::min(0.5, std::max(progress, goal));
+  const double forcing = std::min(
+      0.5, std::max(options_.linear_forcing > 0.0 ? options_.linear_forcing : progress, goal));
   const int max_cg = 3 * model_.particle_count();
   const PcgResult pcg = multigrid_ ? multigrid_->solve(hessian_, rhs_, dx_, forcing, max_cg)
                                    : pcg_.solve(hessian_, rhs_, dx_, forcing, max_cg);

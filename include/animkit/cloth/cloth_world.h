@@ -65,9 +65,9 @@ struct ClothWorldDesc {
 /// Largest frame count a world runs: a run still ends.
 constexpr int kMaxWorldFrames = 1'000'000;
 
-/// Newton's iteration cap with contact, when the settings' own is lower: an impact takes many
-/// more iterations than a free cloth, since continuous collision detection shortens the steps
-/// while new parts of the cloth arrive at a collider.
+/// Newton's iteration cap with contact, when the settings leave theirs at its default: an impact
+/// takes many more iterations than a free cloth, since continuous collision detection shortens the
+/// steps while new parts of the cloth arrive at a collider.
 constexpr int kContactNewtonIterations = 300;
 
 /// A built world: the simulator (with contact, friction and air terms added) and the colliders as

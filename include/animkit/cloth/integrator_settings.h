@@ -65,6 +65,12 @@ struct NewtonSettings {
   /// any mesh and does not wander where buckling cloth has several minima. 0: off; else
   /// [0, 1). IPC's scripts mostly use 1e-3.
   double velocity_tolerance = 0.0;
+  /// The relative residual CG solves each Newton system to (inexact Newton, Eisenstat and
+  /// Walker 1996), in [0, 1). 0 (default): adaptive, 1% of the relative gradient, which saves
+  /// Newton iterations when the goal is a tight gradient. A fixed forcing term such as 0.1
+  /// suits a stop on the step's size (velocity_tolerance): CG's last digits only refine a
+  /// correction that the next iteration redoes.
+  double linear_forcing = 0.0;
 
   std::optional<Error> validate() const;
 };
