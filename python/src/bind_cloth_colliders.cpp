@@ -328,8 +328,9 @@ void bind_colliders(py::module_& m) {
           [](ContactSettings& s, const std::string& name) {
             s.hessian = barrier_hessian_from(name);
           },
-          "How each pair's barrier Hessian is formed: 'projected' (exact, eigen-projected) or "
-          "'gauss_newton' (rank one, PSD by construction).")
+          "How each pair's barrier Hessian is formed: 'projected' (exact, eigen-projected), "
+          "'gauss_newton' (rank one, PSD by construction) or 'adaptive' (Gauss-Newton until "
+          "collision detection freezes a step, then projected for the rest of the substep).")
       .def("__repr__", [](const ContactSettings& s) {
         return "ContactSettings(thickness=" + repr_number(s.thickness) +
                ", stiffness=" + repr_number(s.stiffness) +

@@ -30,7 +30,8 @@ std::string repr_newton(const NewtonSettings& s) {
          ", max_line_search_steps=" + std::to_string(s.max_line_search_steps) + ", projection='" +
          enum_name(s.projection, kProjections) +
          "', record_iterations=" + (s.record_iterations ? "True" : "False") +
-         ", velocity_tolerance=" + repr_number(s.velocity_tolerance) + ")";
+         ", velocity_tolerance=" + repr_number(s.velocity_tolerance) +
+         ", linear_forcing=" + repr_number(s.linear_forcing) + ")";
 }
 
 std::string repr_vbd(const VbdSettings& s) {
@@ -104,7 +105,7 @@ void bind_integrators(py::module_& m) {
       .def(py::init([](const std::string& linear_solver, double tolerance, int max_iterations,
                        double beta, double gamma, int max_line_search_steps,
                        const std::string& projection, bool record_iterations,
-                       double velocity_tolerance) {
+                       double velocity_tolerance, double linear_forcing) {
              NewtonSettings s{parse_enum(linear_solver, kSolvers, "linear solver"),
                               tolerance,
                               max_iterations,
@@ -113,7 +114,8 @@ void bind_integrators(py::module_& m) {
                               max_line_search_steps,
                               parse_enum(projection, kProjections, "Hessian projection"),
                               record_iterations,
-                              velocity_tolerance};
+                              velocity_tolerance,
+                              linear_forcing};
              check(s.validate());
              return s;
            }),
@@ -126,7 +128,8 @@ void bind_integrators(py::module_& m) {
            py::arg("max_line_search_steps") = newton.max_line_search_steps,
            py::arg("projection") = enum_name(newton.projection, kProjections),
            py::arg("record_iterations") = newton.record_iterations,
-           py::arg("velocity_tolerance") = newton.velocity_tolerance)
+           py::arg("velocity_tolerance") = newton.velocity_tolerance,
+           py::arg("linear_forcing") = newton.linear_forcing)
       .def_property(
           "linear_solver",
           [](const NewtonSettings& s) { return enum_name(s.linear_solver, kSolvers); },
@@ -155,6 +158,9 @@ void bind_integrators(py::module_& m) {
                      "IPC's stopping test: a substep also ends when the Newton direction moves "
                      "no particle faster than this fraction of the cloth's bounding-box diagonal "
                      "per second (|dx|_inf / h). 0: off; else [0, 1).")
+      .def_readwrite("linear_forcing", &NewtonSettings::linear_forcing,
+                     "The relative residual CG solves each Newton system to, [0, 1); 0: "
+                     "adaptive (1% of the relative gradient).")
       .def("__repr__", &repr_newton);
 
   const VbdSettings vbd;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "animkit/cloth/integrator_registry.h"
 #include "animkit/cloth/material.h"
@@ -201,8 +202,8 @@ class SceneReader {
       if (!hessian) {
         std::string expected;
         for (const std::string_view known : kBarrierHessianNames)
-          expected += (expected.empty() ? "" : " or ") + std::string(known);
-        fields.error("hessian", "expected " + expected + ", got " + quote_input(*name));
+          expected += (expected.empty() ? "" : ", ") + std::string(known);
+        fields.error("hessian", "expected one of " + expected + ", got " + quote_input(*name));
       }
       contact.hessian = *hessian;
     }
@@ -237,17 +238,21 @@ class SceneReader {
     }
     if (auto tolerance = fields.number("tolerance"))
       set_tolerance(simulation.integrator, *tolerance);
-    if (auto velocity = fields.number("velocity_tolerance")) {
+    // Newton's own stopping and CG settings (their ranges are checked with the integrator's).
+    for (auto [key, setting] :
+         {std::pair{"velocity_tolerance", &NewtonSettings::velocity_tolerance},
+          std::pair{"linear_forcing", &NewtonSettings::linear_forcing}}) {
+      const auto value = fields.number(key);
+      if (!value) continue;
       auto* newton = std::get_if<NewtonSettings>(&simulation.integrator);
       if (desc.choose_integrator) {  // the winner's own settings replace the default's
-        fields.error("velocity_tolerance", "applies to a named Newton integrator, not 'auto'");
+        fields.error(key, "applies to a named Newton integrator, not 'auto'");
       }
       if (!newton) {
-        fields.error("velocity_tolerance",
-                     "applies to the Newton integrators (implicit-*) only, not " +
-                         quote_input(integrator_entry(simulation.integrator).name));
+        fields.error(key, "applies to the Newton integrators (implicit-*) only, not " +
+                              quote_input(integrator_entry(simulation.integrator).name));
       }
-      newton->velocity_tolerance = *velocity;  // its range is checked with the integrator's
+      newton->*setting = *value;
     }
     simulation.substeps = fields.integer("substeps").value_or(simulation.substeps);
     fields.finish();

@@ -178,9 +178,10 @@ Result<std::string> cloth_scene_json(const ClothWorldDesc& scene) {
                              : std::string(integrator_entry(scene.simulation.integrator).name);
   if (auto tolerance = tolerance_of(scene.simulation.integrator)) solver["tolerance"] = *tolerance;
   if (!scene.choose_integrator) {
-    if (const auto* newton = std::get_if<NewtonSettings>(&scene.simulation.integrator);
-        newton && newton->velocity_tolerance > 0.0) {
-      solver["velocity_tolerance"] = newton->velocity_tolerance;
+    if (const auto* newton = std::get_if<NewtonSettings>(&scene.simulation.integrator); newton) {
+      if (newton->velocity_tolerance > 0.0)
+        solver["velocity_tolerance"] = newton->velocity_tolerance;
+      if (newton->linear_forcing > 0.0) solver["linear_forcing"] = newton->linear_forcing;
     }
   }
   solver["substeps"] = scene.simulation.substeps;

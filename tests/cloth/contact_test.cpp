@@ -123,27 +123,35 @@ TEST_P(ContactHessian, ASheetSettlesOnTheGroundWithinItsThicknessAndPinsHold) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothHessians, ContactHessian,
-                         ::testing::Values(BarrierHessian::projected, BarrierHessian::gauss_newton),
+                         ::testing::Values(BarrierHessian::projected, BarrierHessian::gauss_newton,
+                                           BarrierHessian::adaptive),
                          [](const ::testing::TestParamInfo<BarrierHessian>& hessian) {
                            return std::string(barrier_hessian_name(hessian.param));
                          });
 
 // The Gauss-Newton choice assembles, pair by pair, exactly contact_barrier_gauss_newton_hessian
-// times kappa: a positive semi-definite matrix that is not the projected one.
-TEST(Contact, TheGaussNewtonHessianIsPositiveSemiDefiniteAndDiffersFromTheProjectedOne) {
+// times kappa: a positive semi-definite matrix that is not the projected one. The adaptive
+// choice gives Gauss-Newton's until CCD freezes a step, then the projected one.
+TEST(Contact, GaussNewtonHessianIsPsdUnlikeTheProjectedOneAndAdaptiveSwitchesOnAFrozenStep) {
   auto sim = ClothSimulator::create(cotton_sheet(4, 0.0012, Vec3::Zero()), {});
   ASSERT_TRUE(sim);
   const auto model = std::make_shared<const ClothModel>(sim->model());
   const int n = model->particle_count();
   Eigen::VectorXd x = sim->state().positions;
   for (Eigen::Index k = 0; k < x.size(); ++k) x[k] += 2e-4 * std::sin(1.9 * static_cast<double>(k));
-  auto dense_hessian = [&](BarrierHessian kind) {
+  auto dense_hessian = [&](BarrierHessian kind, double frozen_step = 0.0) {
     auto contact = ContactTerm::create(
         model, {.thickness = 2e-3, .hessian = kind},
         {.meshes = {sphere(Vec3(0.0, -0.2985, 0.0), 0.3)}, .ground_height = 0.0});
     EXPECT_TRUE(contact);
     ContactTerm& term = **contact;
     term.prepare(sim->state(), 1.0 / 60.0);
+    if (frozen_step > 0.0) {
+      // A step straight down through the ball: CCD admits almost none of it.
+      Eigen::VectorXd down = Eigen::VectorXd::Zero(x.size());
+      for (int i = 0; i < n; ++i) down[3 * i + 1] = -frozen_step;
+      EXPECT_LT(term.max_step(x, down), kFrozenStepFraction);
+    }
     term.update(x);
     EXPECT_GT(term.stats(x).active_pairs, 0);
     std::vector<HessianBlock> blocks;
@@ -157,6 +165,9 @@ TEST(Contact, TheGaussNewtonHessianIsPositiveSemiDefiniteAndDiffersFromTheProjec
   };
   const Eigen::MatrixXd gauss_newton = dense_hessian(BarrierHessian::gauss_newton);
   const Eigen::MatrixXd projected = dense_hessian(BarrierHessian::projected);
+  // Adaptive: Gauss-Newton's until a step is frozen, the projected one from then on.
+  EXPECT_EQ(dense_hessian(BarrierHessian::adaptive), gauss_newton);
+  EXPECT_EQ(dense_hessian(BarrierHessian::adaptive, 1e3), projected);
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gauss_newton);
   ASSERT_GT(eigen.eigenvalues().maxCoeff(), 0.0);
   EXPECT_GE(eigen.eigenvalues().minCoeff(), -1e-9 * eigen.eigenvalues().maxCoeff());

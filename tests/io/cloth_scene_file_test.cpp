@@ -98,11 +98,15 @@ TEST(ClothSceneFile, ReadsAMeshClothAndAMeshColliderBesideTheFile) {
   EXPECT_EQ(std::get<MeshShape>(scene->colliders[0].shape).mesh.triangles.size(), 4u);
 }
 
-TEST(ClothSceneFile, ReadsTheVelocityTolerance) {
+TEST(ClothSceneFile, ReadsTheVelocityToleranceAndTheLinearForcing) {
   const auto scene = parse(
-      R"({"solver": {"integrator": "implicit-multigrid", "velocity_tolerance": 1e-3}})");
+      R"({"solver": {"integrator": "implicit-multigrid", "velocity_tolerance": 1e-3,
+                     "linear_forcing": 0.1}, "contact": {"hessian": "adaptive"}})");
   ASSERT_TRUE(scene) << scene.error().message;
-  EXPECT_EQ(std::get<NewtonSettings>(scene->simulation.integrator).velocity_tolerance, 1e-3);
+  const auto& newton = std::get<NewtonSettings>(scene->simulation.integrator);
+  EXPECT_EQ(newton.velocity_tolerance, 1e-3);
+  EXPECT_EQ(newton.linear_forcing, 0.1);
+  EXPECT_EQ(scene->contact.hessian, BarrierHessian::adaptive);
 }
 
 TEST(ClothSceneFile, TheDocumentedExampleSceneReadsAndBuilds) {
@@ -146,7 +150,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{R"({"cloth": {"pins": "all"}})",
                  "cloth.pins: expected corners, edge or none, got 'all'"},
         BadScene{R"({"contact": {"hessian": "exact"}})",
-                 "contact.hessian: expected projected or gauss_newton, got 'exact'"},
+                 "contact.hessian: expected one of projected, gauss_newton, adaptive, got 'exact'"},
         BadScene{R"({"colliders": [{"shape": "cube"}]})",
                  "colliders[0].shape: expected sphere, box, capsule or mesh, got 'cube'"},
         BadScene{R"({"colliders": [{"radius": "big"}]})",
@@ -195,6 +199,11 @@ INSTANTIATE_TEST_SUITE_P(
                  "only, not 'vbd'"},
         BadScene{R"({"solver": {"integrator": "implicit-pcg", "velocity_tolerance": -1}})",
                  "velocity tolerance must be in [0, 1), got -1"},
+        BadScene{R"({"solver": {"integrator": "vbd", "linear_forcing": 0.1}})",
+                 "solver.linear_forcing: applies to the Newton integrators (implicit-*) "
+                 "only, not 'vbd'"},
+        BadScene{R"({"solver": {"integrator": "implicit-pcg", "linear_forcing": 1}})",
+                 "linear forcing must be in [0, 1), got 1"},
         BadScene{R"({"dt": 1e400})",
                  "not valid JSON ([json.exception.out_of_range.406] number overflow parsing "
                  "'1e400')"},

@@ -69,6 +69,7 @@ struct ContactTerm::Impl {
   std::vector<ContactPair> pairs;  // what value, gradient and Hessian sum over
   GatherRegion region;             // where `pairs` holds every pair within dhat
   std::int64_t gathers = 0;
+  bool exact_hessian = false;      // this substep's pairs take the projected exact Hessian
   mutable Eigen::VectorXd moved;   // difference()'s workspace
   bool rest_lengths_known = false;
 
@@ -128,9 +129,8 @@ struct ContactTerm::Impl {
       pair_active[at] = contact_distance_squared(pair, p, ground_height()) < barrier.dhat();
       if (!pair_active[at]) return;
       pair_hessians[at] =
-          settings.hessian == BarrierHessian::gauss_newton
-              ? contact_barrier_gauss_newton_hessian(pair, p, ground_height(), barrier)
-              : contact_barrier_derivatives(pair, p, ground_height(), barrier).hessian;
+          !exact_hessian ? contact_barrier_gauss_newton_hessian(pair, p, ground_height(), barrier)
+                         : contact_barrier_derivatives(pair, p, ground_height(), barrier).hessian;
     });
   }
 };
@@ -157,6 +157,7 @@ Result<std::shared_ptr<ContactTerm>> ContactTerm::create(std::shared_ptr<const C
   }
   auto impl = std::make_unique<Impl>();
   impl->settings = settings;
+  impl->exact_hessian = settings.hessian == BarrierHessian::projected;
   impl->barrier = *LogBarrier::create(settings.thickness * settings.thickness);
   impl->ground = obstacles.ground_height;
   // One obstacle list: the fixed meshes, then each collider's surface where it is now.
@@ -236,6 +237,7 @@ void ContactTerm::prepare(const ClothState& state, double h) {
     impl_->rest_lengths_known = true;
   }
   impl_->moving.begin_substep(impl_->geometry, state.time + h);
+  impl_->exact_hessian = impl_->settings.hessian == BarrierHessian::projected;
 }
 
 bool ContactTerm::settled() const {
@@ -265,8 +267,11 @@ double ContactTerm::max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& st
       !impl_->region.covers_step(x, step)) {
     if (!impl_->gather(x, &step)) return 0.0;  // a non-finite step: take none of it
   }
-  return earliest_contact(impl_->geometry, impl_->pairs, x, step, impl_->ground_height(),
-                          impl_->settings.min_separation);
+  const double bound = earliest_contact(impl_->geometry, impl_->pairs, x, step,
+                                        impl_->ground_height(), impl_->settings.min_separation);
+  if (impl_->settings.hessian == BarrierHessian::adaptive && bound < kFrozenStepFraction)
+    impl_->exact_hessian = true;
+  return bound;
 }
 
 double ContactTerm::value(const Eigen::VectorXd& x) const {
