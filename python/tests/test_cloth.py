@@ -198,7 +198,7 @@ def test_integrator_settings():
     assert newton.velocity_tolerance == 0.0
     assert animkit.NewtonSettings(velocity_tolerance=1e-3).velocity_tolerance == 1e-3
     assert repr(animkit.NewtonSettings(velocity_tolerance=1e-3)).endswith(
-        ", velocity_tolerance=0.001, linear_forcing=0)")
+        ", velocity_tolerance=0.001, linear_forcing=0.0)")
     assert animkit.VbdSettings().max_iterations == 1000
     assert animkit.LocalGlobalSettings(chebyshev=False).chebyshev is False
     assert repr(animkit.ExplicitEulerSettings()) == "ExplicitEulerSettings()"

@@ -96,6 +96,20 @@ Result<std::shared_ptr<ContactTerm>> make_contact(const ClothWorldDesc& desc,
 
 }  // namespace
 
+void use_fast_contact_settings(ClothWorldDesc& world) {
+  NewtonSettings newton;
+  newton.linear_solver = LinearSolverKind::multigrid;
+  newton.tolerance = 1e-4;
+  newton.velocity_tolerance = 1e-3;
+  // Measured on the built-in scenes: with Gauss-Newton's blocks CG's last digits cost more
+  // than they save (drape-sphere 21 x 21, adaptive forcing: a worst step of 8.9 s against
+  // 0.76 s with a fixed 10%).
+  newton.linear_forcing = 0.1;
+  world.simulation.integrator = newton;
+  world.choose_integrator = false;
+  world.contact.hessian = BarrierHessian::adaptive;
+}
+
 Result<ClothWorld> build_cloth_world(const ClothWorldDesc& desc) {
   if (auto error = desc.validate()) return fail(error->message);  // before the sheet's errors
   auto cloth = build_world_cloth(desc);

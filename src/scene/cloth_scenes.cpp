@@ -121,8 +121,7 @@ ClothWorldDesc cotton_sheet_world(int cells, double size, double height) {
   grid.offset = Vec3(-0.5 * size, 0.0, 0.0);  // the grid starts at x = 0: centre it
   world.cloth = grid;
   world.material_name = "cotton";
-  world.simulation.integrator = find_integrator("implicit-multigrid")->defaults;
-  set_tolerance(world.simulation.integrator, 1e-4);
+  use_fast_contact_settings(world);
   world.time_step = 1.0 / 30.0;
   return world;
 }

@@ -26,26 +26,20 @@ ClothDesc crumpled_stiff_cloth() {
   return testing_support::crumpled(make_grid_cloth({.cells = 6, .stiffness = 1e4}));
 }
 
-TEST(VelocityStop, RejectsToleranceOutsideZeroToOne) {
-  for (const double bad : {-1e-3, 1.0, std::numeric_limits<double>::quiet_NaN(),
-                           std::numeric_limits<double>::infinity()}) {
-    NewtonSettings settings;
-    settings.velocity_tolerance = bad;
-    const auto sim = ClothSimulator::create(make_grid_cloth(), {settings, 0});
-    ASSERT_FALSE(sim);
-    EXPECT_EQ(sim.error().message.rfind("velocity tolerance must be in [0, 1), got ", 0), 0u)
-        << sim.error().message;
-  }
-}
-
-TEST(VelocityStop, RejectsLinearForcingOutsideZeroToOne) {
-  for (const double bad : {-0.1, 1.0, std::numeric_limits<double>::quiet_NaN()}) {
-    NewtonSettings settings;
-    settings.linear_forcing = bad;
-    const auto sim = ClothSimulator::create(make_grid_cloth(), {settings, 0});
-    ASSERT_FALSE(sim);
-    EXPECT_EQ(sim.error().message.rfind("linear forcing must be in [0, 1), got ", 0), 0u)
-        << sim.error().message;
+// The velocity tolerance and CG's fixed forcing term both take [0, 1).
+TEST(VelocityStop, RejectsToleranceAndLinearForcingOutsideZeroToOne) {
+  for (const auto& [setting, message] :
+       {std::pair{&NewtonSettings::velocity_tolerance,
+                  "velocity tolerance must be in [0, 1), got "},
+        std::pair{&NewtonSettings::linear_forcing, "linear forcing must be in [0, 1), got "}}) {
+    for (const double bad : {-1e-3, 1.0, std::numeric_limits<double>::quiet_NaN(),
+                             std::numeric_limits<double>::infinity()}) {
+      NewtonSettings settings;
+      settings.*setting = bad;
+      const auto sim = ClothSimulator::create(make_grid_cloth(), {settings, 0});
+      ASSERT_FALSE(sim);
+      EXPECT_EQ(sim.error().message.rfind(message, 0), 0u) << sim.error().message;
+    }
   }
 }
 

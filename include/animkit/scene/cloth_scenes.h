@@ -43,8 +43,8 @@ ClothPictureFrame cloth_picture_frame(const ClothWorldDesc& world, const ClothDe
 ClothPictureFrame widened_to_hold(ClothPictureFrame frame, const ClothState& state);
 
 /// The square cotton sheet of `cells` cells per side and `size` m that the contact scenes
-/// use: flat at height y, centred on the y axis, free (no pins), gravity 9.81. Solved by
-/// Newton with multigrid to 1e-4 relative gradient, at dt 1/30 s.
+/// use: flat at height y, centred on the y axis, free (no pins), gravity 9.81, at dt 1/30 s,
+/// solved with use_fast_contact_settings().
 ClothWorldDesc cotton_sheet_world(int cells, double size, double height);
 
 }  // namespace animkit
