@@ -213,7 +213,9 @@ std::function<int()> add_cloth_command(CLI::App& app) {
       ->add_option("--integrator", args->integrator,
                    "auto (the fastest on this scene, measured over its first 3 steps) or one "
                    "of: " +
-                       integrator_names())
+                       integrator_names() +
+                       "; with a collider or --ground and neither this nor --tolerance, the "
+                       "fast contact settings (docs/contact.md)")
       ->capture_default_str();
   cloth
       ->add_option("--substeps", args->substeps,
