@@ -50,14 +50,15 @@ enum class BarrierHessian : std::uint8_t {
   adaptive,
 };
 
+/// A step CCD cuts below this fraction of its length is frozen (BarrierHessian::adaptive). On
+/// the built-in scenes routine contact cuts Newton's steps to 2e-4 .. 1e-2 of their length (a
+/// pair may close 90% of its gap per step); the steps that stalled Gauss-Newton on `fold` were
+/// cut to 1e-9 and 4e-15.
+inline constexpr double kFrozenStepFraction = 1e-4;
+
 /// Each BarrierHessian's name (scene files, Python), in the enum's order: the only list.
 inline constexpr std::array<std::string_view, 3> kBarrierHessianNames = {
     "projected", "gauss_newton", "adaptive"};
-
-/// A step CCD cuts below this fraction of its length is frozen (BarrierHessian::adaptive):
-/// routine contact cuts steps to 1e-4 .. 1e-2 (a pair may close 90% of its gap); a stalled
-/// Newton iteration, measured on the built-in scene `fold`, to 1e-9 and below.
-inline constexpr double kFrozenStepFraction = 1e-4;
 inline std::string_view barrier_hessian_name(BarrierHessian hessian) {
   return kBarrierHessianNames[static_cast<std::size_t>(hessian)];
 }

@@ -21,7 +21,7 @@
 //   "ground": {"height": 0, "friction": 0.3},
 //   "contact": {"thickness": 0.002, "stiffness": 0, "self_contact": true,
 //               "self_friction": 0.3, "friction_passes": 1,
-//               "hessian": "projected" | "gauss_newton"},
+//               "hessian": "projected" | "gauss_newton" | "adaptive"},
 //   "wind": {"velocity": [x, y, z], "gust": [x, y, z], "gust_frequency": 0.5,
 //            "air_density": 1.2, "normal_drag": 1.2, "tangential_drag": 0.02},
 //   "solver": {"integrator": "implicit-pcg", "tolerance": 1e-6, "substeps": 0,
