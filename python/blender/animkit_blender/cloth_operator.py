@@ -4,6 +4,7 @@ a point cache (.pc2 + Mesh Cache modifier)."""
 import math
 import os
 import tempfile
+import threading
 import time
 
 import bpy
@@ -131,102 +132,137 @@ def frame_step(scene):
     return scene.render.fps_base / scene.render.fps
 
 
-def simulate(context, cloth_obj, collider_objs, options, report=None):
-    """Simulates and bakes. options: a dict or the operator (its properties). Returns a dict
-    of stats. Raises AnimkitMissing, ClothSetupError, animkit.Error."""
-    animkit = load_animkit()
-    get = options.get if isinstance(options, dict) else (lambda k: getattr(options, k))
-    scene = context.scene
-    first, last = scene.frame_start, scene.frame_end
-    if last <= first:
-        raise ClothSetupError(f"the scene's frame range {first}..{last} has no step")
-    bake_mode = get("bake_mode")
-    started = time.perf_counter()
-    original_frame = scene.frame_current
+class ClothBake:
+    """One bake in three parts: set up on Blender's main thread (reads the scene), run on any
+    thread (the library's loop only: no bpy), finished on the main thread (writes the shape
+    keys or the Mesh Cache modifier). cancel() from any thread stops the run after the frame in
+    progress; a stopped run writes nothing (the point cache file stays absent)."""
 
-    # Start from the first frame, without an earlier bake of this operator.
-    bake.remove_baked_keys(cloth_obj)
-    bake.remove_cache_modifier(cloth_obj)
-    matrices = world_matrices(scene, collider_objs, range(first, last + 1))
-    depsgraph = context.evaluated_depsgraph_get()
-    world, tris, pins = cloth_arrays(cloth_obj, depsgraph)
-    if bake_mode == "SHAPE_KEYS" and len(world) != len(cloth_obj.data.vertices):
-        raise ClothSetupError(
-            f"'{cloth_obj.name}' has modifiers that change its vertex count "
-            f"({len(cloth_obj.data.vertices)} -> {len(world)}): apply them, or bake as a "
-            "point cache")
-    if len(tris) == 0:
-        raise ClothSetupError(f"'{cloth_obj.name}' has no faces")
-    enabled = [m.name for m in cloth_obj.modifiers if m.show_viewport or m.show_render]
-    if bake_mode == "SHAPE_KEYS" and enabled and report is not None:
-        report({"WARNING"}, f"'{cloth_obj.name}' has modifiers ({', '.join(enabled)}) that "
-                            "apply again on top of the baked shape keys: apply or disable them, "
-                            "or bake as a point cache")
+    def __init__(self, context, cloth_obj, collider_objs, options, report=None):
+        """options: a dict or the operator (its properties). Raises AnimkitMissing,
+        ClothSetupError, animkit.Error. Removes the object's earlier bake: the cloth's rest
+        shape is read without it."""
+        animkit = load_animkit()
+        get = options.get if isinstance(options, dict) else (lambda k: getattr(options, k))
+        scene = context.scene
+        first, last = scene.frame_start, scene.frame_end
+        if last <= first:
+            raise ClothSetupError(f"the scene's frame range {first}..{last} has no step")
+        self.bake_mode = get("bake_mode")
+        self.started = time.perf_counter()
+        self.scene, self.cloth_obj, self.first = scene, cloth_obj, first
+        self.original_frame = scene.frame_current
 
-    friction = get("friction")
-    frame_dt = frame_step(scene)
-    built = []
-    kinds = []
-    for obj, obj_matrices in zip(collider_objs, matrices):
-        collider, kind = collider_for(animkit, obj, depsgraph, friction, obj_matrices, frame_dt)
-        built.append(collider)
-        kinds.append(f"{obj.name}: {kind}{' (moving)' if collider.moving else ''}")
-    ground = (animkit.Ground(height=get("ground_height"), friction=friction)
-              if get("use_ground") else None)
+        # Start from the first frame, without an earlier bake of this operator.
+        bake.remove_baked_keys(cloth_obj)
+        bake.remove_cache_modifier(cloth_obj)
+        matrices = world_matrices(scene, collider_objs, range(first, last + 1))
+        depsgraph = context.evaluated_depsgraph_get()
+        world, tris, pins = cloth_arrays(cloth_obj, depsgraph)
+        if self.bake_mode == "SHAPE_KEYS" and len(world) != len(cloth_obj.data.vertices):
+            raise ClothSetupError(
+                f"'{cloth_obj.name}' has modifiers that change its vertex count "
+                f"({len(cloth_obj.data.vertices)} -> {len(world)}): apply them, or bake as a "
+                "point cache")
+        if len(tris) == 0:
+            raise ClothSetupError(f"'{cloth_obj.name}' has no faces")
+        enabled = [m.name for m in cloth_obj.modifiers if m.show_viewport or m.show_render]
+        if self.bake_mode == "SHAPE_KEYS" and enabled and report is not None:
+            report({"WARNING"}, f"'{cloth_obj.name}' has modifiers ({', '.join(enabled)}) "
+                                "that apply again on top of the baked shape keys: apply or "
+                                "disable them, or bake as a point cache")
 
-    material = animkit.material(get("material"))
-    cloth = animkit.MeshCloth(axes.points_to_animkit(world), tris, material=material,
-                              gravity=get("gravity"), pins=list(pins))
-    substeps = get("substeps") or max(1, math.ceil(frame_dt / AUTO_MAX_STEP - 1e-9))
-    step_dt = frame_dt / substeps
-    frame_count = last - first + 1
-    # One simulator step a Blender frame, cut into substeps by the integrator: every step the
-    # run hands its sinks is a frame to keep.
-    scene_desc = animkit.ClothScene(cloth=cloth, colliders=built, ground=ground, dt=frame_dt,
-                                    substeps=substeps, frames=frame_count - 1)
-    simulator = animkit.ClothSimulator(scene_desc)
+        friction = get("friction")
+        frame_dt = frame_step(scene)
+        built = []
+        kinds = []
+        for obj, obj_matrices in zip(collider_objs, matrices):
+            collider, kind = collider_for(animkit, obj, depsgraph, friction, obj_matrices,
+                                          frame_dt)
+            built.append(collider)
+            kinds.append(f"{obj.name}: {kind}{' (moving)' if collider.moving else ''}")
+        ground = (animkit.Ground(height=get("ground_height"), friction=friction)
+                  if get("use_ground") else None)
 
-    # animkit's world (Y up) into the object's local space with Blender's axes.
-    inverse = np.linalg.inv(np.array(cloth_obj.matrix_world, dtype=np.float64))
-    to_local = np.eye(4)
-    to_local[:3, :3] = inverse[:3, :3] @ axes.ANIMKIT_TO_BLENDER
-    to_local[:3, 3] = inverse[:3, 3]
-    wm = context.window_manager
-    sinks = [lambda frame, report: wm.progress_update(frame)]
-    if bake_mode == "SHAPE_KEYS":
-        local = np.empty((frame_count, len(world), 3), dtype=np.float64)
-        local[0] = world @ inverse[:3, :3].T + inverse[:3, 3]
+        material = animkit.material(get("material"))
+        cloth = animkit.MeshCloth(axes.points_to_animkit(world), tris, material=material,
+                                  gravity=get("gravity"), pins=list(pins))
+        substeps = get("substeps") or max(1, math.ceil(frame_dt / AUTO_MAX_STEP - 1e-9))
+        self.frame_count = last - first + 1
+        # One simulator step a Blender frame, cut into substeps by the integrator: every step
+        # the run hands its sinks is a frame to keep. No integrator given: with colliders or
+        # ground, the library's fast contact settings.
+        scene_desc = animkit.ClothScene(cloth=cloth, colliders=built, ground=ground,
+                                        dt=frame_dt, substeps=substeps,
+                                        frames=self.frame_count - 1)
+        self.simulator = animkit.ClothSimulator(scene_desc)
+        self.stats = {"frames": self.frame_count, "substeps": substeps,
+                      "dt": frame_dt / substeps, "vertices": len(world),
+                      "triangles": len(tris), "pins": len(pins), "colliders": kinds}
 
-        def keep(frame, report):
-            local[frame] = np.asarray(simulator.positions) @ to_local[:3, :3].T + to_local[:3, 3]
-        sinks.append(keep)
-    else:
-        path = cache_path(cloth_obj, get("cache_dir"))
-        os.makedirs(os.path.dirname(path), exist_ok=True)
-        # The library's point cache, written whole when the run ends (or not at all).
-        sinks.append(animkit.PointCacheSink(os.path.dirname(path), file=os.path.basename(path),
-                                            colliders=False, transform=to_local,
-                                            start_frame=first))
-    wm.progress_begin(0, frame_count)
-    try:
-        simulator.run(sinks=sinks)
-    finally:
-        wm.progress_end()
-    simulated = time.perf_counter()
+        # animkit's world (Y up) into the object's local space with Blender's axes.
+        inverse = np.linalg.inv(np.array(cloth_obj.matrix_world, dtype=np.float64))
+        to_local = np.eye(4)
+        to_local[:3, :3] = inverse[:3, :3] @ axes.ANIMKIT_TO_BLENDER
+        to_local[:3, 3] = inverse[:3, 3]
+        self.frames_done = 0
+        self.cancelled = False
+        self.error = None
+        self.sinks = [self._count]
+        if self.bake_mode == "SHAPE_KEYS":
+            self.local = np.empty((self.frame_count, len(world), 3), dtype=np.float64)
+            self.local[0] = world @ inverse[:3, :3].T + inverse[:3, 3]
+            simulator = self.simulator
 
-    stats = {"frames": frame_count, "substeps": substeps, "dt": step_dt,
-             "vertices": len(world), "triangles": len(tris), "pins": len(pins),
-             "colliders": kinds, "simulate_seconds": simulated - started}
-    if bake_mode == "SHAPE_KEYS":
-        bake.bake_shape_keys(cloth_obj, first, local)
-        stats["keys"] = frame_count
-    else:
-        bake.add_cache_modifier(cloth_obj, bpy.path.relpath(path) if bpy.data.filepath else path,
-                                first)
-        stats["cache"] = path
-    scene.frame_set(original_frame)
-    stats["total_seconds"] = time.perf_counter() - started
-    return stats
+            def keep(frame, report):
+                self.local[frame] = (np.asarray(simulator.positions) @ to_local[:3, :3].T
+                                     + to_local[:3, 3])
+            self.sinks.append(keep)
+        else:
+            self.path = cache_path(cloth_obj, get("cache_dir"))
+            os.makedirs(os.path.dirname(self.path), exist_ok=True)
+            # The library's point cache, written whole when the run ends (or not at all).
+            self.sinks.append(animkit.PointCacheSink(
+                os.path.dirname(self.path), file=os.path.basename(self.path),
+                colliders=False, transform=to_local, start_frame=first))
+
+    def _count(self, frame, report):
+        self.frames_done = frame
+        return not self.cancelled  # False stops the run (its sinks write nothing)
+
+    def cancel(self):
+        self.cancelled = True
+
+    def run(self, progress=None):
+        """The simulation (any thread). `progress(frame)` after each frame, on this thread.
+        An animkit.Error is kept in self.error, not raised: run() may be a thread's target."""
+        sinks = self.sinks + ([lambda frame, report: progress(frame)] if progress else [])
+        try:
+            self.simulator.run(sinks=sinks)
+        except animkit_error_types() as error:
+            self.error = error
+        self.stats["simulate_seconds"] = time.perf_counter() - self.started
+
+    def finish(self):
+        """Writes the bake (main thread) unless the run was cancelled or failed; returns the
+        stats. Raises the run's animkit.Error."""
+        self.scene.frame_set(self.original_frame)
+        if self.error is not None:
+            raise self.error
+        if self.cancelled:
+            return self.stats
+        if self.bake_mode == "SHAPE_KEYS":
+            bake.bake_shape_keys(self.cloth_obj, self.first, self.local)
+            self.stats["keys"] = self.frame_count
+        else:
+            path = self.path
+            bake.add_cache_modifier(
+                self.cloth_obj, bpy.path.relpath(path) if bpy.data.filepath else path,
+                self.first)
+            self.stats["cache"] = path
+        self.scene.frame_set(self.original_frame)
+        self.stats["total_seconds"] = time.perf_counter() - self.started
+        return self.stats
 
 
 def cache_path(obj, cache_dir=""):
@@ -280,18 +316,36 @@ class ANIMKIT_OT_simulate_cloth(bpy.types.Operator):
         obj = context.active_object
         return obj is not None and obj.type == "MESH"
 
-    def execute(self, context):
+    def _objects(self, context):
+        """The cloth and its colliders from the selection (warns about what is skipped)."""
         cloth_obj = context.active_object
         others = [o for o in context.selected_objects if o is not cloth_obj]
         skipped = [o.name for o in others if o.type != "MESH"]
         if skipped:
             self.report({"WARNING"}, f"not meshes, ignored as colliders: {', '.join(skipped)}")
-        collider_objs = [o for o in others if o.type == "MESH"]
+        return cloth_obj, [o for o in others if o.type == "MESH"]
+
+    def _start(self, context):
+        """The bake set up from the selection and the operator's properties, or None after
+        reporting why not."""
+        cloth_obj, collider_objs = self._objects(context)
         errors = (AnimkitMissing, ClothSetupError) + animkit_error_types()
         try:
-            stats = simulate(context, cloth_obj, collider_objs, self, self.report)
+            return ClothBake(context, cloth_obj, collider_objs, self, self.report)
         except errors as error:
             self.report({"ERROR"}, str(error))
+            return None
+
+    def _finished(self, job):
+        """Reports a bake's end: FINISHED with its numbers, or CANCELLED with why."""
+        try:
+            stats = job.finish()
+        except animkit_error_types() as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
+        if job.cancelled:
+            self.report({"WARNING"}, f"animkit cloth: cancelled after {job.frames_done} of "
+                                     f"{job.frame_count - 1} frames; nothing was baked")
             return {"CANCELLED"}
         where = (f"{stats['keys']} shape keys" if "keys" in stats
                  else f"point cache {stats['cache']}")
@@ -301,3 +355,51 @@ class ANIMKIT_OT_simulate_cloth(bpy.types.Operator):
                     f"[{', '.join(stats['colliders'])}], simulated in "
                     f"{stats['simulate_seconds']:.2f} s, baked as {where}")
         return {"FINISHED"}
+
+    def execute(self, context):
+        """Bakes at once, blocking Blender (scripts, background mode), Blender's progress
+        indicator following the frames."""
+        job = self._start(context)
+        if job is None:
+            return {"CANCELLED"}
+        wm = context.window_manager
+        wm.progress_begin(0, job.frame_count)
+        try:
+            job.run(progress=wm.progress_update)
+        finally:
+            wm.progress_end()
+        return self._finished(job)
+
+    def invoke(self, context, event):
+        """From the menu: the run goes on a thread while Blender stays responsive, the status
+        bar counts the frames, and Esc cancels (a modal operator on a timer)."""
+        if bpy.app.background:
+            return self.execute(context)
+        self._job = self._start(context)
+        if self._job is None:
+            return {"CANCELLED"}
+        self._thread = threading.Thread(target=self._job.run, daemon=True)
+        self._thread.start()
+        wm = context.window_manager
+        self._timer = wm.event_timer_add(0.1, window=context.window)
+        wm.modal_handler_add(self)
+        wm.progress_begin(0, self._job.frame_count)
+        return {"RUNNING_MODAL"}
+
+    def modal(self, context, event):
+        job = self._job
+        if event.type == "ESC":
+            job.cancel()
+        elif event.type != "TIMER":
+            return {"PASS_THROUGH"}
+        wm = context.window_manager
+        wm.progress_update(job.frames_done)
+        context.workspace.status_text_set(
+            f"animkit cloth: frame {job.frames_done} of {job.frame_count - 1} "
+            f"({time.perf_counter() - job.started:.0f} s), Esc to cancel")
+        if self._thread.is_alive():
+            return {"RUNNING_MODAL"}
+        wm.event_timer_remove(self._timer)
+        wm.progress_end()
+        context.workspace.status_text_set(None)
+        return self._finished(job)

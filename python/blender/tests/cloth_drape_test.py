@@ -12,6 +12,7 @@ modifier), which must play the same positions.
 """
 import pathlib
 import sys
+import threading
 import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
@@ -129,6 +130,34 @@ def check_drape(frames, sphere_vertices, sphere_tris, cloth_tris):
                                  f"point {lowest:.3f} m, sphere top {top} m")
 
 
+def check_cancel(cloth, sphere, cache_dir):
+    """What Esc does from the menu (the operator's modal run): the bake runs on a thread and is
+    cancelled after its second frame; it then writes nothing, neither a point cache file nor a
+    modifier."""
+    from animkit_blender.cloth_operator import ClothBake
+    support.make_active(cloth, sphere)
+    options = {"material": "cotton", "gravity": 9.81, "friction": 0.3, "use_ground": True,
+               "ground_height": 0.0, "substeps": 0, "bake_mode": "POINT_CACHE",
+               "cache_dir": str(cache_dir)}
+    job = ClothBake(bpy.context, cloth, [sphere], options)
+    thread = threading.Thread(target=job.run)
+    thread.start()
+    while job.frames_done < 2 and thread.is_alive():
+        time.sleep(0.01)
+    job.cancel()
+    thread.join()
+    stats = job.finish()
+    check(job.cancelled and job.error is None, "the bake was not cancelled cleanly")
+    check(2 <= job.frames_done < job.frame_count - 1,
+          f"cancelled after {job.frames_done} of {job.frame_count - 1} frames")
+    check("cache" not in stats and "keys" not in stats, f"a cancelled bake reported {stats}")
+    left = sorted(p.name for p in cache_dir.iterdir()) if cache_dir.exists() else []
+    check(left == [], f"a cancelled bake left files: {left}")
+    check(cloth.modifiers.get("animkit cache") is None and cloth.data.shape_keys is None,
+          "a cancelled bake left a modifier or shape keys")
+    print(f"cancelled after frame {job.frames_done}: nothing written")
+
+
 def main():
     python_dir, _, out_dir = support.arguments(3, "PYTHON_DIR DATA_DIR OUT_DIR")
     out = pathlib.Path(out_dir)
@@ -165,6 +194,7 @@ def main():
     difference = np.abs(cached - frames[:CACHE_FRAMES]).max()
     print(f"point cache {path}: largest difference from the shape keys {difference:.3g} m")
     check(difference < 1e-5, f"the point cache plays other positions ({difference:.3g} m)")
+    check_cancel(cloth, sphere, out / "cancelled")
     print("cloth_drape_test: OK")
 
 

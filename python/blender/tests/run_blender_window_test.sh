@@ -1,0 +1,21 @@
+#!/bin/sh
+# Runs one of the add-on's tests in a Blender with a window (on Xvfb's virtual display), for
+# what background mode cannot do: modal operators and keyboard events (Blender's
+# --enable-event-simulate lets the script send them). Exit 77 (ctest's SKIP_RETURN_CODE)
+# without Blender or xvfb-run, except under CI (CI set), where that is a failure.
+#   usage: run_blender_window_test.sh SCRIPT ARGS...   (ARGS reach the script after "--")
+set -u
+for tool in blender xvfb-run; do
+  if ! command -v "$tool" >/dev/null 2>&1; then
+    if [ -n "${CI:-}" ]; then
+      echo "$tool not found on PATH (make test installs it: scripts/install-deps.sh --tests)"
+      exit 1
+    fi
+    echo "$tool not found on PATH: skipped"
+    exit 77
+  fi
+done
+script="$1"
+shift
+exec xvfb-run -a blender --factory-startup --enable-event-simulate --python-exit-code 1 \
+  --python "$script" -- "$@"
