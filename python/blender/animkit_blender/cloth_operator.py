@@ -343,6 +343,10 @@ class ANIMKIT_OT_simulate_cloth(bpy.types.Operator):
         except animkit_error_types() as error:
             self.report({"ERROR"}, str(error))
             return {"CANCELLED"}
+        except ReferenceError:  # the cloth or the scene was deleted while the run went on
+            self.report({"ERROR"}, "animkit cloth: the cloth object was removed during the "
+                                   "bake; nothing was baked")
+            return {"CANCELLED"}
         if job.cancelled:
             self.report({"WARNING"}, f"animkit cloth: cancelled after {job.frames_done} of "
                                      f"{job.frame_count - 1} frames; nothing was baked")
