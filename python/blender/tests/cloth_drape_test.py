@@ -8,7 +8,8 @@ ground plane). Baked as shape keys: one key per frame, only the current frame's 
 baked vertex outside the sphere (distance from its centre >= radius) and no baked edge or
 triangle crossing the sphere's mesh; the cloth moved, rests on the sphere's top and hangs down
 its sides. Then its first frames are baked again as a point cache (.pc2 in OUT_DIR, Mesh Cache
-modifier), which must play the same positions.
+modifier), which must play the same positions. Last, a point-cache bake on a thread cancelled
+after its second frame writes nothing.
 """
 import pathlib
 import sys
