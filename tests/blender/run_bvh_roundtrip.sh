@@ -4,14 +4,8 @@
 # except under CI (CI set), where `make test` has installed Blender: there a skip would hide it.
 #   usage: run_bvh_roundtrip.sh FIXTURE IN.bvh OUT_DIR CHECK_SCRIPT
 set -u
-if ! command -v blender >/dev/null 2>&1; then
-  if [ -n "${CI:-}" ]; then
-    echo "blender not found on PATH (make test installs it: scripts/install-deps.sh --tests)"
-    exit 1
-  fi
-  echo "blender not found on PATH: skipped"
-  exit 77
-fi
+. "$(dirname "$0")/../support/require_tools.sh"
+require_tools blender
 if [ ! -f "$2" ]; then
   echo "$2 not found: skipped"
   exit 77

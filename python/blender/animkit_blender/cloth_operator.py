@@ -246,23 +246,24 @@ class ClothBake:
     def finish(self):
         """Writes the bake (main thread) unless the run was cancelled or failed; returns the
         stats. Raises the run's animkit.Error."""
-        self.scene.frame_set(self.original_frame)
-        if self.error is not None:
-            raise self.error
-        if self.cancelled:
+        try:
+            if self.error is not None:
+                raise self.error
+            if self.cancelled:
+                return self.stats
+            if self.bake_mode == "SHAPE_KEYS":
+                bake.bake_shape_keys(self.cloth_obj, self.first, self.local)
+                self.stats["keys"] = self.frame_count
+            else:
+                path = self.path
+                bake.add_cache_modifier(
+                    self.cloth_obj, bpy.path.relpath(path) if bpy.data.filepath else path,
+                    self.first)
+                self.stats["cache"] = path
+            self.stats["total_seconds"] = time.perf_counter() - self.started
             return self.stats
-        if self.bake_mode == "SHAPE_KEYS":
-            bake.bake_shape_keys(self.cloth_obj, self.first, self.local)
-            self.stats["keys"] = self.frame_count
-        else:
-            path = self.path
-            bake.add_cache_modifier(
-                self.cloth_obj, bpy.path.relpath(path) if bpy.data.filepath else path,
-                self.first)
-            self.stats["cache"] = path
-        self.scene.frame_set(self.original_frame)
-        self.stats["total_seconds"] = time.perf_counter() - self.started
-        return self.stats
+        finally:
+            self.scene.frame_set(self.original_frame)
 
 
 def cache_path(obj, cache_dir=""):

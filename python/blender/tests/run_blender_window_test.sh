@@ -5,16 +5,8 @@
 # without Blender or xvfb-run, except under CI (CI set), where that is a failure.
 #   usage: run_blender_window_test.sh SCRIPT ARGS...   (ARGS reach the script after "--")
 set -u
-for tool in blender xvfb-run; do
-  if ! command -v "$tool" >/dev/null 2>&1; then
-    if [ -n "${CI:-}" ]; then
-      echo "$tool not found on PATH (make test installs it: scripts/install-deps.sh --tests)"
-      exit 1
-    fi
-    echo "$tool not found on PATH: skipped"
-    exit 77
-  fi
-done
+. "$(dirname "$0")/../../../tests/support/require_tools.sh"
+require_tools blender xvfb-run
 script="$1"
 shift
 exec xvfb-run -a blender --factory-startup --enable-event-simulate --python-exit-code 1 \

@@ -5,14 +5,8 @@
 # (user_install_check.py). Exit 77 without Blender unless CI is set.
 #   usage: user_install_test.sh SOURCE_DIR BUILD_DIR DATA_DIR OUT_DIR
 set -u
-if ! command -v blender >/dev/null 2>&1; then
-  if [ -n "${CI:-}" ]; then
-    echo "blender not found on PATH (make test installs it: scripts/install-deps.sh --tests)"
-    exit 1
-  fi
-  echo "blender not found on PATH: skipped"
-  exit 77
-fi
+. "$(dirname "$0")/../../../tests/support/require_tools.sh"
+require_tools blender
 rm -rf "$4" && mkdir -p "$4/home" || exit 1
 export HOME="$4/home"
 unset XDG_CONFIG_HOME
