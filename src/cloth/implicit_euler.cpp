@@ -13,6 +13,14 @@
 namespace animkit {
 
 namespace {
+// The relative residual a direction that passes the velocity test is solved to again before
+// the substep ends on it (when linear_forcing is looser). CG stopped at 10% has resolved the
+// stiff components and left the soft ones (hanging, folding) short, so such a direction can
+// understate the distance to the minimum. Measured on drape-sphere 41 x 41 (60 frames): without
+// this check 6 of the 25 resting steps ended more than 0.1 mm (up to 2.5 mm) from the
+// reference's step from the same state and an impact step 45 mm; with it none, and 15 mm.
+constexpr double kVerifyingForcing = 0.01;
+
 // Longest extension of a projected Newton step: 2^10 times its length.
 constexpr int kMaxStepDoublings = 10;
 }  // namespace
@@ -83,7 +91,8 @@ bool ImplicitEuler::add_energy_term(std::shared_ptr<EnergyTerm> term) {
   return true;
 }
 
-bool ImplicitEuler::solve_newton_system(double relative_gradient, IterationRecord& record) {
+bool ImplicitEuler::solve_newton_system(double relative_gradient, IterationRecord& record,
+                                        double forcing_override) {
   rhs_ = -gradient_;
   // The direct solver's pattern is the springs': a term coupling other particles is solved by
   // CG instead (same Newton direction, same stopping test), its diagonal blocks need not.
@@ -110,8 +119,9 @@ bool ImplicitEuler::solve_newton_system(double relative_gradient, IterationRecor
   // stiff cloth solving past it costs more CG iterations than the Newton iteration it saves.
   const double progress = 0.01 * std::clamp(relative_gradient, 1e-3, 0.5);
   const double goal = 0.5 * options_.tolerance / relative_gradient;
-  const double forcing = std::min(
+  double forcing = std::min(
       0.5, std::max(options_.linear_forcing > 0.0 ? options_.linear_forcing : progress, goal));
+  if (forcing_override > 0.0) forcing = forcing_override;
   const int max_cg = 3 * model_.particle_count();
   const PcgResult pcg = multigrid_ ? multigrid_->solve(hessian_, rhs_, dx_, forcing, max_cg)
                                    : pcg_.solve(hessian_, rhs_, dx_, forcing, max_cg);
@@ -149,11 +159,14 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
     IterationRecord record;
     // g itself is needed only for the record: the line search works with differences.
     if (options_.record_iterations) record.objective = potential_.value(x_);
-    const double slope =
-        newton_direction(gradient_norm, gradient_norm / start_norm, record, report);
+    double slope = newton_direction(gradient_norm, gradient_norm / start_norm, record, report);
     report.newton_speed_end = dx_.lpNorm<Eigen::Infinity>() / h;
+    if (report.newton_speed_end <= speed_stop && options_.linear_forcing > kVerifyingForcing) {
+      report.newton_speed_end = verified_speed(gradient_norm / start_norm, h, record, report);
+      slope = gradient_.dot(dx_);
+    }
     if (report.newton_speed_end <= speed_stop && potential_.terms_settled() &&
-        potential_.terms_gaps_healthy(x_)) {
+        potential_.terms_gaps_settled(x_, dx_)) {
       // The next correction is below the physical tolerance and no gap is closing: x is the
       // substep's end (IPC takes no step then either). Friction may re-lag at the loop's top.
       report.linear_iterations += record.linear_iterations;
@@ -261,6 +274,21 @@ double ImplicitEuler::newton_direction(double gradient_norm, double relative_gra
     slope = -gradient_norm * gradient_norm;
   }
   return slope;
+}
+
+// |dx|_inf / h of the Newton direction solved again, with the same Hessian, to
+// kVerifyingForcing (a direction solved loosely passed the velocity test). Should the tighter
+// solve meet negative curvature or not descend, the loose direction stays and the substep
+// goes on (infinity). trial_ is free until the line search.
+double ImplicitEuler::verified_speed(double relative_gradient, double h, IterationRecord& record,
+                                     StepReport& report) {
+  const auto t = StageClock::now();
+  trial_ = dx_;
+  const bool positive = solve_newton_system(relative_gradient, record, kVerifyingForcing);
+  report.ms_linear_solve += ms_since(t);
+  if (positive && gradient_.dot(dx_) < 0.0) return dx_.lpNorm<Eigen::Infinity>() / h;
+  dx_ = trial_;
+  return std::numeric_limits<double>::infinity();
 }
 
 // The longest fraction of dx the energy terms admit (continuous collision detection for

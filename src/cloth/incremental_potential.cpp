@@ -88,9 +88,10 @@ bool IncrementalPotential::terms_settled() const {
                      [](const auto& term) { return term->settled(); });
 }
 
-bool IncrementalPotential::terms_gaps_healthy(const Eigen::VectorXd& x) const {
+bool IncrementalPotential::terms_gaps_settled(const Eigen::VectorXd& x,
+                                              const Eigen::VectorXd& dx) const {
   return std::all_of(terms_.begin(), terms_.end(),
-                     [&x](const auto& term) { return term->gaps_healthy(x); });
+                     [&](const auto& term) { return term->gaps_settled(x, dx); });
 }
 
 double IncrementalPotential::max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step) {

@@ -154,7 +154,7 @@ class ContactTerm final : public EnergyTerm {
 
   /// False while a collider is short of its pose at the substep's end (CCD held it back).
   bool settled() const override;
-  bool gaps_healthy(const Eigen::VectorXd& x) const override;
+  bool gaps_settled(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const override;
   /// Fails, naming the particles and the obstacle, when the cloth at x cannot start against
   /// the obstacles where they are now: with self-contact, a thickness above the cloth's mean
   /// edge length (its own neighbours would repel); a pair closer than kMinStartGapFraction of

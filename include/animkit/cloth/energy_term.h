@@ -49,12 +49,16 @@ class EnergyTerm {
   /// there: the solver does not report convergence before every term is settled, and keeps
   /// calling update() at its iterate. Default: always settled.
   virtual bool settled() const { return true; }
-  /// Whether x keeps the margin the term needs before a substep may end there on a test of the
-  /// next step's size alone (NewtonSettings::velocity_tolerance). Contact wants no pair closer
-  /// than a tenth of its activation distance: a substep starts at the admissible point nearest
-  /// its prediction, which closes resting gaps to a tenth, and one that stopped there at once
-  /// would close them further every step until rounding lets the cloth through. Default: yes.
-  virtual bool gaps_healthy(const Eigen::VectorXd& /*x*/) const { return true; }
+  /// Whether the term is at rest at x along Newton's next correction `dx`, so that a substep
+  /// may end there on the test of the correction's size alone
+  /// (NewtonSettings::velocity_tolerance). A barrier's Newton correction at a small gap is
+  /// never much larger than the gap itself, so a small correction alone does not show that a
+  /// squeezed gap (a substep starts at the admissible point of lowest g, which may close a
+  /// resting gap to a tenth) has reopened: contact wants no vertex of a close pair to move by
+  /// more than a fraction of the pair's distance. Default: yes.
+  virtual bool gaps_settled(const Eigen::VectorXd& /*x*/, const Eigen::VectorXd& /*dx*/) const {
+    return true;
+  }
   /// The largest fraction t in (0, 1] of `step` such that every point x + s step, s in [0, t],
   /// is admissible for this term (e.g. intersection-free, by conservative continuous collision
   /// detection); the line search never tries a longer step. Called once per iteration before

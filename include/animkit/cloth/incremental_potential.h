@@ -54,8 +54,8 @@ class IncrementalPotential {
   double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& step);
   /// Whether every term has reached the substep's end (EnergyTerm::settled).
   bool terms_settled() const;
-  /// Every term's EnergyTerm::gaps_healthy at x.
-  bool terms_gaps_healthy(const Eigen::VectorXd& x) const;
+  /// Every term's EnergyTerm::gaps_settled at x along dx.
+  bool terms_gaps_settled(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const;
   /// Whether any term may bound the step (then the minimization starts from an admissible point
   /// between x_n and y instead of from y itself).
   bool has_terms() const { return !terms_.empty(); }
