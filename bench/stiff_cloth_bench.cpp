@@ -1,4 +1,4 @@
-// Issue 10's table: every implicit integrator of the registry on the scenes that matter, each
+// The stiff-cloth table: every implicit integrator of the registry on the scenes that matter, each
 // against Newton + block-Jacobi PCG (implicit-pcg, the lab's solver) in the same run:
 //   cotton: 1 m x 1 m, 101 x 101, the cotton preset (0.15 kg/m^2, 1000 N/m), pinned at two
 //           corners, dt 1/60, to 1e-2 and to 1e-4 relative gradient;

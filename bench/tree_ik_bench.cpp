@@ -1,4 +1,4 @@
-// Issue 12's tree IK benchmark: the CMU walk 131_01 (31 joints, End Sites aside; metres) with
+// The tree IK benchmark: the CMU walk 131_01 (31 joints, End Sites aside; metres) with
 // four effectors, the hands (lhand, rhand) and the feet (LeftAnkle, RightAnkle). Each frame's
 // targets are that frame's FK (so every set is jointly reachable), the root is put where the
 // frame has it, and each solve starts from the previous frame's solution (rest for the first).

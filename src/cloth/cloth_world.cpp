@@ -110,6 +110,15 @@ void use_fast_contact_settings(ClothWorldDesc& world) {
   world.contact.hessian = BarrierHessian::adaptive;
 }
 
+void use_reference_contact_settings(ClothWorldDesc& world) {
+  NewtonSettings newton;
+  newton.linear_solver = LinearSolverKind::multigrid;
+  newton.tolerance = 1e-4;
+  world.simulation.integrator = newton;
+  world.choose_integrator = false;
+  world.contact.hessian = BarrierHessian::projected;
+}
+
 Result<ClothWorld> build_cloth_world(const ClothWorldDesc& desc) {
   if (auto error = desc.validate()) return fail(error->message);  // before the sheet's errors
   auto cloth = build_world_cloth(desc);

@@ -20,16 +20,24 @@ void CouplingBlocks::add(int row, int col, const Eigen::Matrix3d& value) {
   }
 }
 
+void CouplingBlocks::stable_sort_by(const std::vector<int>& in, std::vector<int>& out,
+                                    int Entry::*key) {
+  bucket_.assign(static_cast<std::size_t>(nodes_) + 1, 0);
+  for (const int k : in) ++bucket_[added_[k].*key + 1];
+  for (int r = 0; r < nodes_; ++r) bucket_[r + 1] += bucket_[r];
+  out.resize(in.size());
+  for (const int k : in) out[bucket_[added_[k].*key]++] = k;
+}
+
 void CouplingBlocks::assemble() {
-  // Sort by (row, col), ties in the order added: the duplicates' sum has one order.
-  order_.resize(added_.size());
-  for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = static_cast<int>(k);
-  std::sort(order_.begin(), order_.end(), [this](int a, int b) {
-    const Entry &u = added_[a], &v = added_[b];
-    if (u.row != v.row) return u.row < v.row;
-    if (u.col != v.col) return u.col < v.col;
-    return a < b;
-  });
+  // Sort by (row, col), ties in the order added: the duplicates' sum has one order. Two
+  // stable counting sorts, by column and then by row (a radix sort), linear in the blocks
+  // and the nodes: a comparison sort here took 8% of a contact step (drape-sphere 41 x 41).
+  by_column_.resize(added_.size());
+  for (std::size_t k = 0; k < by_column_.size(); ++k) by_column_[k] = static_cast<int>(k);
+  stable_sort_by(by_column_, order_, &Entry::col);
+  by_column_.swap(order_);
+  stable_sort_by(by_column_, order_, &Entry::row);
   upper_.clear();
   for (int k : order_) {
     const Entry& e = added_[k];

@@ -47,9 +47,15 @@ class CouplingBlocks {
     int row, col;  // row < col
     Eigen::Matrix3d value;
   };
+  // Indices `in` into added_ reordered into `out` by the key (in [0, nodes_)), ties kept
+  // in their order in `in`.
+  void stable_sort_by(const std::vector<int>& in, std::vector<int>& out, int Entry::*key);
+
   int nodes_ = 0;
-  std::vector<Entry> added_;   // as added
-  std::vector<int> order_;     // sort permutation of added_
+  std::vector<Entry> added_;    // as added
+  std::vector<int> order_;      // sort permutation of added_
+  std::vector<int> by_column_;  // added_ sorted by column alone (the sort's first pass)
+  std::vector<int> bucket_;     // counting sort's cursors, one per node
   std::vector<Entry> upper_;   // merged, sorted by (row, col)
   std::vector<int> row_fill_;  // assembly cursor per row
   Matrix full_;

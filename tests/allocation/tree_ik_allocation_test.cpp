@@ -1,5 +1,5 @@
-// Issue 12: "each solver with its own settings struct and caller-owned workspace so that
-// nothing allocates per call". Once a workspace has seen a skeleton and a problem shape, every
+// Each solver has its own settings struct and a caller-owned workspace, so that nothing
+// allocates per call. Once a workspace has seen a skeleton and a problem shape, every
 // further solve (and the two-bone solver always) makes no heap allocation at all.
 #include <gtest/gtest.h>
 

@@ -58,6 +58,41 @@ TEST(ClothWorld, ContactIsWiredAndReportsEachStep) {
   EXPECT_GT(step->min_contact_distance, 0.0);
 }
 
+// The reference quality mode (IPC's settings) and the fast contact settings: what each sets,
+// and that on a sheet landing on a ball they end each step within a millimetre of each other.
+TEST(ClothWorld, FastContactSettingsFollowTheReference) {
+  ClothWorldDesc reference_desc = sheet_over_ball();
+  use_reference_contact_settings(reference_desc);
+  ClothWorldDesc fast_desc = sheet_over_ball();
+  use_fast_contact_settings(fast_desc);
+  const auto& reference_newton = std::get<NewtonSettings>(reference_desc.simulation.integrator);
+  const auto& fast_newton = std::get<NewtonSettings>(fast_desc.simulation.integrator);
+  EXPECT_EQ(reference_desc.contact.hessian, BarrierHessian::projected);
+  EXPECT_EQ(reference_newton.velocity_tolerance, 0.0);
+  EXPECT_EQ(reference_newton.linear_forcing, 0.0);
+  EXPECT_EQ(fast_desc.contact.hessian, BarrierHessian::adaptive);
+  EXPECT_EQ(fast_newton.velocity_tolerance, 1e-3);
+  EXPECT_EQ(fast_newton.linear_forcing, 0.1);
+  for (const NewtonSettings* newton : {&reference_newton, &fast_newton}) {
+    EXPECT_EQ(newton->linear_solver, LinearSolverKind::multigrid);
+    EXPECT_EQ(newton->tolerance, 1e-4);
+  }
+  auto reference = build_cloth_world(reference_desc);
+  auto fast = build_cloth_world(fast_desc);
+  ASSERT_TRUE(reference && fast);
+  for (int frame = 0; frame < 20; ++frame) {
+    ASSERT_TRUE(reference->simulator.set_state(fast->simulator.state()));
+    const auto exact = reference->simulator.step(1.0 / 60.0);
+    const auto step = fast->simulator.step(1.0 / 60.0);
+    ASSERT_TRUE(exact && step);
+    EXPECT_TRUE(exact->converged && step->converged) << "frame " << frame;
+    const double apart =
+        (fast->simulator.state().positions - reference->simulator.state().positions)
+            .lpNorm<Eigen::Infinity>();
+    EXPECT_LE(apart, 1e-3) << "frame " << frame;
+  }
+}
+
 TEST(ClothWorld, NoFrictionTermWhenEveryCoefficientIsZero) {
   ClothWorldDesc desc = sheet_over_ball();
   desc.colliders[0].friction = 0.0;

@@ -1,4 +1,4 @@
-// Issue 10: a material hangs the same at any resolution. A sheet of a preset, 1 m square,
+// A material hangs the same at any resolution. A sheet of a preset, 1 m square,
 // pinned at two corners, is brought to static equilibrium at 21 x 21 up to 161 x 161
 // particles, and its sag compared: the drop of the centre of mass and of the lowest particle
 // below the pins. (Not the pinned edge's midpoint: a point pin is a logarithmic singularity of

@@ -28,7 +28,7 @@ TEST(Material, PresetsAreValidAndNamed) {
     EXPECT_FALSE(preset->source.empty());
   }
   EXPECT_EQ(find_material("tweed"), nullptr);
-  // Issue 10's cotton sheet.
+  // The physical-cloth benchmark's cotton sheet.
   EXPECT_EQ(find_material("cotton")->material.density, 0.15);
   EXPECT_EQ(find_material("cotton")->material.stretch, 1000.0);
 }

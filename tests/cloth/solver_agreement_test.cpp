@@ -1,4 +1,4 @@
-// Issue 10: every implicit integrator minimizes the same incremental potential, so run to a
+// Every implicit integrator minimizes the same incremental potential, so run to a
 // tight tolerance each one reaches the state converged Newton reaches. Parametrized over the
 // registry (a new integrator joins automatically), plus the unaccelerated variants of the
 // accelerated methods, whose plain iterations are a code path of their own.

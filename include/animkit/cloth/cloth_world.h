@@ -79,6 +79,11 @@ constexpr int kContactNewtonIterations = 300;
 /// 13.5 mm of the reference's from the same state (median 0.3 micrometres).
 void use_fast_contact_settings(ClothWorldDesc& world);
 
+/// IPC's own settings, the reference quality mode the fast ones are measured against: Newton
+/// with the multigrid preconditioner to 1e-4 relative gradient alone, CG's adaptive forcing,
+/// each pair's exact barrier Hessian projected onto the PSD cone (BarrierHessian::projected).
+void use_reference_contact_settings(ClothWorldDesc& world);
+
 /// A built world: the simulator (with contact, friction and air terms added) and the colliders as
 /// they stand at time 0 (for drawing and export).
 struct ClothWorld {
