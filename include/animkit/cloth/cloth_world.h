@@ -75,8 +75,8 @@ constexpr int kContactNewtonIterations = 300;
 /// CG to a fixed 10% residual (linear_forcing) and the adaptive barrier Hessian
 /// (BarrierHessian::adaptive). Every iterate stays intersection-free as with IPC's own
 /// settings (projected Hessian, 1e-4 alone), which remain the reference they are measured
-/// against: on drape-sphere at 41 x 41, 1.66 times faster over the run, every step within
-/// 13.5 mm of the reference's from the same state (median 0.3 micrometres).
+/// against: on drape-sphere at 41 x 41, 1.85 times faster over the run, every step within
+/// 15 mm of the reference's from the same state (median 0.03 mm; docs/contact.md).
 void use_fast_contact_settings(ClothWorldDesc& world);
 
 /// IPC's own settings, the reference quality mode the fast ones are measured against: Newton
