@@ -48,8 +48,8 @@ class ImplicitEuler final : public ClothIntegrator {
                           StepReport& report);
   bool solve_newton_system(double relative_gradient, IterationRecord& record,
                            double forcing_override = 0.0);
-  double verified_speed(double relative_gradient, double h, IterationRecord& record,
-                        StepReport& report);
+  std::optional<double> verified_speed(double relative_gradient, double h, IterationRecord& record,
+                                       StepReport& report);
   double step_bound(StepReport& report);
   std::optional<double> line_search(double slope, double bound, IterationRecord& record,
                                     StepReport& report);
