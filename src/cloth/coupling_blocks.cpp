@@ -1,6 +1,5 @@
 #include "coupling_blocks.h"
 
-#include <algorithm>
 #include <cassert>
 
 namespace animkit {

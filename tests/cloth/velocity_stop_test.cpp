@@ -95,28 +95,38 @@ TEST(VelocityStop, EndsWithinTheToleranceOfTheExactStep) {
   }
 }
 
+constexpr double kThickness = 2e-3;
+
+// A 0.3 m cotton sheet `height` above the ground, with contact of kThickness, stepped by
+// Newton with the multigrid preconditioner, the velocity stop at 1e-3 and CG's `forcing`.
+ClothSimulator cotton_over_ground(double height, double forcing) {
+  GridClothOptions grid{.cells = 6, .size = 0.3, .gravity = 9.81};
+  grid.height = height;
+  grid.material = ClothMaterial{};
+  grid.pins = GridPins::none;
+  NewtonSettings settings;
+  settings.linear_solver = LinearSolverKind::multigrid;
+  settings.tolerance = 1e-4;
+  settings.velocity_tolerance = 1e-3;
+  settings.linear_forcing = forcing;
+  settings.max_iterations = 300;
+  auto sim = newton_simulator(make_grid_cloth(grid), settings);
+  auto contact =
+      ContactTerm::create(std::make_shared<const ClothModel>(sim.model()),
+                          {.thickness = kThickness}, {.meshes = {}, .ground_height = 0.0});
+  EXPECT_TRUE(contact) << contact.error().message;
+  if (contact) {
+    EXPECT_TRUE(sim.add_energy_term(*contact));
+  }
+  return sim;
+}
+
 // A cotton sheet dropped 5 mm onto the ground rests on it for 90 steps, every step converged
 // and no gap below a tenth of the thickness, with CG's adaptive forcing and with the fixed 10%
 // of the fast contact settings.
 TEST(VelocityStop, RestingContactConvergesAndKeepsItsGap) {
-  constexpr double kThickness = 2e-3;
-  GridClothOptions grid{.cells = 6, .size = 0.3, .gravity = 9.81};
-  grid.height = 5e-3;
-  grid.material = ClothMaterial{};
-  grid.pins = GridPins::none;
   for (const double forcing : {0.0, 0.1}) {
-    NewtonSettings settings;
-    settings.linear_solver = LinearSolverKind::multigrid;
-    settings.tolerance = 1e-4;
-    settings.velocity_tolerance = 1e-3;
-    settings.linear_forcing = forcing;
-    settings.max_iterations = 300;
-    auto sim = newton_simulator(make_grid_cloth(grid), settings);
-    auto contact = ContactTerm::create(std::make_shared<const ClothModel>(sim.model()),
-                                       {.thickness = kThickness},
-                                       {.meshes = {}, .ground_height = 0.0});
-    ASSERT_TRUE(contact) << contact.error().message;
-    ASSERT_TRUE(sim.add_energy_term(*contact));
+    ClothSimulator sim = cotton_over_ground(5e-3, forcing);
     for (int frame = 0; frame < 90; ++frame) {
       const auto report = sim.step(1.0 / 30.0);
       ASSERT_TRUE(report) << report.error().message;
@@ -136,22 +146,7 @@ TEST(VelocityStop, RestingContactConvergesAndKeepsItsGap) {
 // a tenth of its gap (ContactTerm::gaps_settled). A sheet at rest 5 micrometres above the
 // ground (its resting gap is about 0.8 mm) must reopen the gap within one step.
 TEST(VelocityStop, SqueezedGapReopensBeforeTheStepEnds) {
-  constexpr double kThickness = 2e-3;
-  GridClothOptions grid{.cells = 6, .size = 0.3, .gravity = 9.81};
-  grid.height = 5e-6;
-  grid.material = ClothMaterial{};
-  grid.pins = GridPins::none;
-  NewtonSettings settings;
-  settings.linear_solver = LinearSolverKind::multigrid;
-  settings.tolerance = 1e-4;
-  settings.velocity_tolerance = 1e-3;
-  settings.max_iterations = 300;
-  auto sim = newton_simulator(make_grid_cloth(grid), settings);
-  auto contact = ContactTerm::create(std::make_shared<const ClothModel>(sim.model()),
-                                     {.thickness = kThickness},
-                                     {.meshes = {}, .ground_height = 0.0});
-  ASSERT_TRUE(contact) << contact.error().message;
-  ASSERT_TRUE(sim.add_energy_term(*contact));
+  ClothSimulator sim = cotton_over_ground(5e-6, 0.0);
   const auto report = sim.step(1.0 / 30.0);
   ASSERT_TRUE(report) << report.error().message;
   EXPECT_TRUE(report->converged);
@@ -166,8 +161,9 @@ TEST(VelocityStop, ContactGapsAreSettledWhenNoVertexMovesATenthOfItsGap) {
   grid.material = ClothMaterial{};
   grid.pins = GridPins::none;
   auto sim = newton_simulator(make_grid_cloth(grid), NewtonSettings{});
-  auto contact = ContactTerm::create(std::make_shared<const ClothModel>(sim.model()),
-                                     {.thickness = 2e-3}, {.meshes = {}, .ground_height = 0.0});
+  auto contact =
+      ContactTerm::create(std::make_shared<const ClothModel>(sim.model()),
+                          {.thickness = kThickness}, {.meshes = {}, .ground_height = 0.0});
   ASSERT_TRUE(contact) << contact.error().message;
   ContactTerm& term = **contact;
   Eigen::VectorXd x = sim.state().positions;
