@@ -7,7 +7,7 @@
 # and the edit loop and the rest:
 #   make check  the library's unit tests (label `fast`) in Release, after an incremental build
 #   make blender  the Python module and the Blender add-on into your own Blender (no root)
-#   make docs   the documentation site (docs/, mkdocs.yml) into build/site
+#   make docs   the documentation site (docs/, mkdocs.yml, the API references) into build/site
 #   make fuzz   builds the libFuzzer targets in the sanitizer tree and runs each FUZZ_SECONDS (60)
 # Test tiers and timeouts: cmake/test_tiers.cmake.
 JOBS   ?= $(shell nproc)
@@ -61,10 +61,18 @@ blender: deps
 	bash scripts/install-blender.sh $(RELEASE_DIR)
 
 # The documentation site into build/site (mkdocs.yml): warnings are errors (--strict fails on a
-# link to a missing page), and every link to a heading is checked too.
-docs:
+# link to a missing page), and every link to a heading is checked too. The Python API page is
+# written from the built module's docstrings and the performance page from the benchmarks'
+# JSON (bench/results) first; Doxygen then writes the C++ API reference into build/site/api
+# and fails on any public symbol without a comment (Doxyfile).
+docs: deps
 	bash scripts/install-deps.sh --docs
+	$(CONFIGURE_RELEASE)
+	$(CMAKE) --build $(RELEASE_DIR) -j $(JOBS) --target animkit_python
+	/usr/bin/python3 python/tools/generate_api_page.py $(RELEASE_DIR)/python docs/python-api.md
+	python3 scripts/performance-page.py bench/results docs/performance.md
 	mkdocs build --strict --site-dir build/site
+	doxygen Doxyfile
 	python3 scripts/check-doc-links.py build/site
 
 test-deps:

@@ -2,7 +2,8 @@
 """Checks every link between the built site's pages (build/site by default): the page exists
 and, for a link to a heading (#anchor), the page has an element with that id. mkdocs --strict
 already fails on a link to a missing page; mkdocs 1.4 does not look at anchors, this does.
-Prints each broken link and exits 1 if there is one.
+Prints each broken link and exits 1 if there is one. On Doxygen's pages (api/) only the pages
+linked to are checked, not the anchors within them.
 
     check-doc-links.py [SITE_DIR]
 """
@@ -39,6 +40,10 @@ def main():
         return 1
     broken = 0
     for path, page in sorted(pages.items()):
+        # Doxygen's pages (api/): their pages must exist, but their own section anchors are
+        # Doxygen's business (1.9.4 links "#nested-classes" on a class whose nested classes
+        # are all private, and so not listed).
+        generated = path.relative_to(site).parts[0] == "api"
         for href in page.links:
             url = urllib.parse.urlsplit(href)
             if url.scheme or url.netloc or href.startswith("mailto:"):
@@ -57,7 +62,8 @@ def main():
             if target not in pages:
                 print(f"{path.relative_to(site)}: {href}: no such page")
                 broken += 1
-            elif url.fragment and urllib.parse.unquote(url.fragment) not in pages[target].ids:
+            elif (url.fragment and not generated
+                  and urllib.parse.unquote(url.fragment) not in pages[target].ids):
                 print(f"{path.relative_to(site)}: {href}: no heading #{url.fragment} there")
                 broken += 1
     print(f"check-doc-links: {len(pages)} pages, {broken} broken links")

@@ -34,8 +34,9 @@ packages=(
   pybind11-dev python3-dev python3-numpy
 )
 if [ "${1:-}" = "--docs" ]; then
-  # The documentation site (make docs): mkdocs and its Material theme.
-  packages=(mkdocs mkdocs-material)
+  # The documentation site (make docs): mkdocs and its Material theme, Doxygen for the C++
+  # API reference.
+  packages=(mkdocs mkdocs-material doxygen)
 elif [ "${1:-}" = "--tests" ]; then
   # The tests only: Blender (Debian's 3.4, the version docs/blender.md uses) opens the
   # BVH files animkit writes and compares them with what animkit computed, and runs the add-on

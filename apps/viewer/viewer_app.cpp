@@ -159,7 +159,8 @@ void ViewerApp::side_panel() {
   ImGui::Separator();
   if (ImGui::Button("Reset view")) reset_camera();
   ImGui::SameLine();
-  ImGui::TextDisabled("%.0f fps", static_cast<double>(ImGui::GetIO().Framerate));
+  // The window's drawing rate; a simulation step's own time is in the scene's panel.
+  ImGui::TextDisabled("drawn at %.0f fps", static_cast<double>(ImGui::GetIO().Framerate));
   ImGui::TextWrapped(
       "Camera: left drag orbits, right or middle drag pans, the wheel zooms, Home or R resets. "
       "Space starts and pauses.");

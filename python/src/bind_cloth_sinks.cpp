@@ -69,13 +69,17 @@ void bind_cloth_sinks(py::module_& m) {
            "a Blender object's local space); start_frame is the header's first frame.");
   py::class_<ObjSink, ClothSink>(
       m, "ObjSink", "cloth.obj (the sheet as it starts) and colliders.obj in a folder.")
-      .def(py::init<std::filesystem::path>(), py::arg("folder"));
+      .def(py::init<std::filesystem::path>(), py::arg("folder"),
+           "Writes folder/cloth.obj and, with colliders, folder/colliders.obj (the start's "
+           "shapes) when a run that did not diverge ends; the folder must exist.");
   py::class_<GltfSink, ClothSink>(
       m, "GltfSink",
       "A .glb file (glTF 2.0): the sheet with one morph target per frame and the colliders "
       "with their motion, in metres with +Y up; web viewers, three.js, Godot and Blender open "
       "it.")
-      .def(py::init<std::filesystem::path>(), py::arg("path"));
+      .def(py::init<std::filesystem::path>(), py::arg("path"),
+           "Writes the .glb at path, whole, when a run that did not diverge ends (refused "
+           "before the first step when its frames would not fit one file).");
 }
 
 }  // namespace animkit::python

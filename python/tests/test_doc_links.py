@@ -32,3 +32,15 @@ def test_a_missing_heading_or_page_fails(source_dir, tmp_path):
     result = check(source_dir, tmp_path / "page")
     assert result.returncode == 1
     assert "index.html: guides.html: no such page" in result.stdout
+
+
+def test_doxygen_pages_have_their_pages_checked_but_not_their_anchors(source_dir, tmp_path):
+    site = tmp_path / "site"
+    write_site(site, "guide.html#units")
+    (site / "api").mkdir()
+    (site / "api" / "class.html").write_text('<a href="#nested-classes">x</a>')
+    assert check(source_dir, site).returncode == 0
+    (site / "api" / "class.html").write_text('<a href="missing.html">x</a>')
+    result = check(source_dir, site)
+    assert result.returncode == 1
+    assert "api/class.html: missing.html: no such page" in result.stdout

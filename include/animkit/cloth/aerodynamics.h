@@ -29,6 +29,7 @@
 
 namespace animkit {
 
+/// The wind: a steady velocity plus gusts that travel downwind with it.
 struct WindSettings {
   Vec3 velocity = Vec3::Zero();  ///< m/s, world space: the steady wind (zero: still air)
   /// m/s, world space: the gusts' extra velocity at their peak, added to `velocity`.
@@ -39,8 +40,9 @@ struct WindSettings {
   Vec3 at(const Vec3& x, double t) const;
 };
 
+/// Settings of the air term: the wind and the air's density and drag coefficients.
 struct AirSettings {
-  WindSettings wind;
+  WindSettings wind;              ///< the air's velocity field (still air by default)
   double density = 1.2;           ///< kg/m^3 (air at 20 C), >= 0; 0 turns the term off
   double normal_drag = 1.2;       ///< C_n, flat-plate pressure drag coefficient, >= 0
   double tangential_drag = 0.02;  ///< C_t, skin friction coefficient, >= 0
@@ -49,6 +51,8 @@ struct AirSettings {
   std::optional<Error> validate() const;
 };
 
+/// Quadratic flat-plate drag of the moving air on the cloth's triangles, as an energy term of
+/// the implicit step (see the comment at the top of aerodynamics.h).
 class AirTerm final : public EnergyTerm {
  public:
   /// Fails when the settings are invalid or the model has no triangles to catch the air.

@@ -14,6 +14,7 @@
 
 namespace animkit {
 
+/// The implicit step's Hessian stored by 3x3 blocks, for the matrix-free linear solvers.
 struct BlockHessian {
   std::vector<Eigen::Matrix3d> diagonal;  ///< per particle, all terms (identity when pinned)
   std::vector<double> inertia;            ///< per particle: m / h^2 (1 when pinned)
@@ -24,6 +25,8 @@ struct BlockHessian {
   std::vector<HessianBlock> extra;
   ElementSchedule springs;  ///< the model's springs, for the products
 
+  /// Sizes the arrays for `model`'s particles and springs (the step that builds the Hessian
+  /// fills them) and builds the spring schedule.
   explicit BlockHessian(const ClothModel& model)
       : diagonal(model.particle_count()),
         inertia(model.particle_count()),

@@ -10,8 +10,10 @@
 
 namespace animkit {
 
+/// Conjugate gradients preconditioned by the inverses of the matrix's 3x3 diagonal blocks.
 class BlockJacobiPcg {
  public:
+  /// Sizes the workspace for `model` (kept by reference: it must outlive this).
   explicit BlockJacobiPcg(const ClothModel& model);
 
   /// Solves A x = b for the symmetric matrix in `a`, from x = 0, until |b - A x| <= tolerance

@@ -10,6 +10,7 @@
 
 namespace animkit {
 
+/// One particle of a ClothDesc: its initial position and velocity, mass, and whether pinned.
 struct ParticleDesc {
   Vec3 position = Vec3::Zero();  ///< world space, scene units
   Vec3 velocity = Vec3::Zero();  ///< world space, units per second
@@ -17,7 +18,9 @@ struct ParticleDesc {
   bool pinned = false;           ///< pinned particles never move
 };
 
+/// One spring of a ClothDesc, joining two particles.
 struct SpringDesc {
+  /// First particle's index, in [0, particle count).
   int a = 0, b = 0;           ///< particle indices, distinct
   double rest_length = -1.0;  ///< > 0, or negative: the distance of a and b in the description
   double stiffness = 100.0;   ///< k > 0 (force per unit length); lab range 10..300, default 100
@@ -48,11 +51,12 @@ inline BendDesc line_bend(int a, int b, int c, double stiffness) {
 
 /// Editable description of a cloth.
 struct ClothDesc {
-  std::vector<ParticleDesc> particles;
-  std::vector<SpringDesc> springs;
+  std::vector<ParticleDesc> particles;  ///< at least one; springs and bends index into it
+  std::vector<SpringDesc> springs;      ///< may be empty
   std::vector<BendDesc> bends;  ///< may be empty (the lab's cloth bends through its springs)
-  /// Surface triangles over the particles, for drawing and OBJ export only (the physics is
-  /// the springs). May be empty.
+  /// Surface triangles over the particles, for drawing and export, and for the energy terms
+  /// that need a surface (air drag, contact); the elastic forces are the springs' and bends'.
+  /// May be empty.
   std::vector<std::array<int, 3>> triangles;
   double gravity = 0.3;  ///< acceleration along -y (units/s^2); lab range 0.1..1, default 0.3
   /// Spring dashpot coefficient c: each spring also pulls with c (v_b - v_a).u along its axis u
@@ -75,47 +79,61 @@ struct ClothModel {
   std::vector<double> stiffness;    ///< per spring; 0 only for the bends' coupling springs
   /// Per bend: its 3 or 4 particles (an unused last slot -1), their weights and stiffness.
   std::vector<std::array<int, 4>> bends;
-  std::vector<std::array<double, 4>> bend_weights;
-  std::vector<double> bend_stiffness;
+  std::vector<std::array<double, 4>> bend_weights;  ///< per bend: w_i, 0 in an unused slot
+  std::vector<double> bend_stiffness;               ///< per bend: c, N/m
   /// Per bend: the springs joining its particle pairs in kBendPairs order (bend_energy.h),
   /// which hold its Hessian blocks; -1 for a pair with an unused slot.
   std::vector<std::array<int, 6>> bend_springs;
-  std::vector<std::array<int, 3>> triangles;
-  double gravity = 0.3;
-  double damping = 0.2;
+  std::vector<std::array<int, 3>> triangles;  ///< ClothDesc::triangles, as described
+  double gravity = 0.3;  ///< ClothDesc::gravity: acceleration along -y (units/s^2)
+  double damping = 0.2;  ///< ClothDesc::damping: the springs' dashpot coefficient c
 
+  /// Number of particles N.
   int particle_count() const { return static_cast<int>(mass.size()); }
+  /// Number of springs, the bends' coupling springs included.
   int spring_count() const { return static_cast<int>(springs.size()); }
+  /// Number of bending elements.
   int bend_count() const { return static_cast<int>(bends.size()); }
 };
 
 /// Positions and velocities of every particle, 3 doubles each, particle-major
 /// (x0 y0 z0 x1 y1 z1 ...), the layout the solvers' vectors use.
 struct ClothState {
-  Eigen::VectorXd positions;
-  Eigen::VectorXd velocities;
+  Eigen::VectorXd positions;   ///< 3N, world space, scene units
+  Eigen::VectorXd velocities;  ///< 3N, world space, units per second
   /// The simulated time this state is at, s (default 0: where a scene starts; any finite
   /// value). ClothSimulator advances it by every substep's h; energy terms whose world moves
   /// with time (colliders on a path, gusts) read it in EnergyTerm::prepare as the substep's start.
   double time = 0.0;
 
+  /// Particle i's position (a copy), 0 <= i < N.
   Vec3 position(int i) const { return positions.segment<3>(3 * i); }
+  /// Particle i's velocity (a copy), 0 <= i < N.
   Vec3 velocity(int i) const { return velocities.segment<3>(3 * i); }
 };
 
-/// Validates `desc` and builds the model and its initial state.
+/// A cloth built from its description: the model and its initial state.
 struct BuiltCloth {
-  ClothModel model;
-  ClothState state;
+  ClothModel model;  ///< the immutable model
+  ClothState state;  ///< the described positions and velocities (pinned particles at rest), time 0
 };
+/// Validates `desc` and builds the model and its initial state; the error names the first
+/// problem (ClothDesc::validate).
 Result<BuiltCloth> build_cloth(const ClothDesc& desc);
 
-/// Energies of a state: kinetic 1/2 sum m v^2, elastic sum 1/2 k (l - L)^2 plus the bends' and
-/// gravitational
-/// sum m g y; `total` is their sum. Damping removes total energy over time.
+/// Energies of a state, in the model's units (J with m, kg and s). Damping removes total
+/// energy over time.
 struct ClothEnergy {
+  /// Kinetic energy, 1/2 sum m |v|^2.
   double kinetic = 0.0, elastic = 0.0, gravitational = 0.0, total = 0.0;
+  /// \var elastic
+  /// Elastic energy: the springs' sum 1/2 k (l - L)^2 plus the bends' energy (bend_energy.h).
+  /// \var gravitational
+  /// Gravitational energy, sum m g y (zero at y = 0).
+  /// \var total
+  /// kinetic + elastic + gravitational.
 };
+/// The energies of `state` (of `model`'s size).
 ClothEnergy cloth_energy(const ClothModel& model, const ClothState& state);
 
 }  // namespace animkit

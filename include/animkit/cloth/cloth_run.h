@@ -15,32 +15,34 @@
 
 namespace animkit {
 
+/// Aggregate numbers of a run's steps (see summarize()); all zero for a run of no steps.
 struct ClothRunSummary {
-  int frames = 0;  ///< steps taken
-  double ms_per_step_median = 0.0;
-  double ms_per_step_mean = 0.0;
+  int frames = 0;                       ///< steps taken
+  double ms_per_step_median = 0.0;      ///< median wall time of a step (ms)
+  double ms_per_step_mean = 0.0;        ///< mean wall time of a step (ms)
   double newton_iterations_mean = 0.0;  ///< per step
-  int newton_iterations_max = 0;
+  int newton_iterations_max = 0;        ///< most solver iterations any one step took
   double linear_iterations_mean = 0.0;  ///< PCG iterations per step
-  double line_search_steps_mean = 0.0;
-  double converged_fraction = 0.0;  ///< steps that reached their gradient tolerance
-  double final_energy = 0.0;        ///< total energy after the last step
+  double line_search_steps_mean = 0.0;  ///< backtracking reductions per step
+  double converged_fraction = 0.0;      ///< steps that reached their gradient tolerance
+  double final_energy = 0.0;            ///< total energy after the last step
 };
 
+/// Summarizes the reports of a run's steps, in the order they were taken.
 ClothRunSummary summarize(std::span<const StepReport> steps);
 
 /// What a run did: one report per step taken and, when a step diverged, its message (the
 /// simulator kept the state before that step; the run stopped there).
 struct ClothRun {
-  std::vector<StepReport> steps;
-  std::optional<std::string> divergence;
+  std::vector<StepReport> steps;          ///< one per step taken, in order
+  std::optional<std::string> divergence;  ///< the diverged step's message; none if none diverged
 };
 
 /// One frame as the sinks see it: frame 0 is the state the run starts from, frame k the state
 /// after k steps (at time start + k dt).
 struct ClothFrame {
-  int frame = 0;
-  const ClothSimulator& simulator;
+  int frame = 0;                    ///< steps of this run taken to reach it (0: the start)
+  const ClothSimulator& simulator;  ///< the simulator, in this frame's state
   /// The colliders where the solver has them: on their paths after every converged step, short
   /// of them after a step CCD held one back (what is drawn and cached is where it really is).
   std::span<const Collider> colliders;
@@ -77,6 +79,7 @@ using ClothFrameCallback =
 /// A callable as a sink: frame() calls it; begin() and finish() do nothing.
 class CallbackSink final : public ClothSink {
  public:
+  /// Wraps `on_frame`; an empty function makes frame() do nothing.
   explicit CallbackSink(ClothFrameCallback on_frame) : on_frame_(std::move(on_frame)) {}
   Result<void> begin(const ClothFrame&, int, double) override { return {}; }
   Result<void> frame(const ClothFrame& frame) override;

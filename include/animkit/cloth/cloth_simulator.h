@@ -14,6 +14,7 @@
 
 namespace animkit {
 
+/// How a ClothSimulator advances its cloth: the integrator and the substeps per step.
 struct SimulationOptions {
   /// Which integrator, with its settings: the lab's implicit Euler (Newton + PCG) by default.
   IntegratorSettings integrator = NewtonSettings{};
@@ -21,19 +22,25 @@ struct SimulationOptions {
   /// explicit Euler (the lab's), 1 for the implicit ones (stable at any step).
   int substeps = 0;
 
+  /// An Error for substeps outside 0..kMaxSubsteps or invalid integrator settings, or none.
   std::optional<Error> validate() const;
+  /// `substeps`, or the integrator's default when it is 0.
   int effective_substeps() const;
 };
 
 /// Positions or velocities beyond this size (scene units, per second) count as exploded.
 constexpr double kExplodedMagnitude = 1e8;
 
+/// A cloth being simulated: its model, its state and the integrator that advances it.
 class ClothSimulator {
  public:
   /// Validates and builds everything once. Errors name the first problem.
   static Result<ClothSimulator> create(const ClothDesc& desc, const SimulationOptions& options);
 
+  /// Takes over the moved-from simulator's cloth, which is left empty: fit only to be
+  /// destroyed or assigned to.
   ClothSimulator(ClothSimulator&&) noexcept;
+  /// Drops this simulator's cloth and takes over the moved-from one's, leaving that empty.
   ClothSimulator& operator=(ClothSimulator&&) noexcept;
   ~ClothSimulator();
 
@@ -58,12 +65,15 @@ class ClothSimulator {
   /// value. Pinned particles get zero velocity.
   Result<void> set_state(const ClothState& state);
 
+  /// The immutable model built from the description.
   const ClothModel& model() const;
   /// The current state. Its position and velocity buffers stay where they are for the
   /// simulator's whole life (steps, set_state and a diverged step's undo write into them), so
   /// a pointer or view into them (the Python module's numpy arrays) stays valid.
   const ClothState& state() const;
+  /// The options it was created with.
   const SimulationOptions& options() const;
+  /// Steps completed since creation (a diverged, undone step does not count).
   int steps_taken() const;
 
  private:

@@ -27,6 +27,7 @@ struct GroundDesc {
   double friction = 0.3;  ///< Coulomb coefficient mu between cloth and ground, finite, >= 0
 };
 
+/// A whole cloth scene as data: the sheet, what it meets, the solver and the run's length.
 struct ClothWorldDesc {
   /// The sheet: a grid (the lab's by default) or a cloth cut from a triangle mesh.
   std::variant<GridClothOptions, MeshClothOptions> cloth = GridClothOptions{};
@@ -50,6 +51,7 @@ struct ClothWorldDesc {
   double time_step = 1.0 / 60.0;   ///< s per frame, in kTimeStepRange (the lab's 1/60)
   int frames = 300;                ///< frames to simulate, in [1, kMaxWorldFrames]
 
+  /// Whether the cloth has something to touch: a collider or a ground (then contact is on).
   bool has_contact() const { return !colliders.empty() || ground.has_value(); }
   /// Friction's settings: each collider's and the ground's coefficient, self_friction (0
   /// without self-contact), the passes.
@@ -87,8 +89,8 @@ void use_reference_contact_settings(ClothWorldDesc& world);
 /// A built world: the simulator (with contact, friction and air terms added) and the colliders as
 /// they stand at time 0 (for drawing and export).
 struct ClothWorld {
-  ClothSimulator simulator;
-  std::vector<Collider> colliders;
+  ClothSimulator simulator;         ///< the cloth, its integrator and energy terms
+  std::vector<Collider> colliders;  ///< built from ClothWorldDesc::colliders, in order, at time 0
   std::shared_ptr<ContactTerm> contact;  ///< null without colliders or ground
   /// Null without contact, or when every friction coefficient is 0.
   std::shared_ptr<FrictionTerm> friction;

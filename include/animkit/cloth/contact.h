@@ -78,6 +78,7 @@ inline constexpr double kMinStartGapFraction = 1e-6;
 /// kilogram per particle and a thickness of 0.1 to 10 mm lies between about 1e4 and 1e16.
 inline constexpr ParameterRange kContactStiffnessRange{0.0, 1e20};
 
+/// How the contact term acts: the barrier's reach and stiffness, self-contact, CCD's margin.
 struct ContactSettings {
   /// dhat, m: the barrier acts on pairs closer than this (the cloth's thickness), > 0.
   double thickness = 2e-3;
@@ -93,6 +94,7 @@ struct ContactSettings {
   /// (CCD bounds every step whatever the direction).
   BarrierHessian hessian = BarrierHessian::projected;
 
+  /// An Error naming the first invalid field (thickness, stiffness, min_separation), or none.
   std::optional<Error> validate() const;
 };
 
@@ -123,6 +125,7 @@ struct ContactStats {
 
 /// Where one active pair (closer than the thickness) is closest, for drawing contacts.
 struct ContactPoint {
+  /// What the cloth touches: a collider's surface (or a fixed mesh), the ground, or itself.
   enum class With : std::uint8_t { collider, ground, self };
   With with = With::collider;  ///< what the cloth touches
   Vec3 cloth = Vec3::Zero();   ///< world space, m: the nearest point of the cloth's primitive
@@ -132,6 +135,8 @@ struct ContactPoint {
   double distance = 0.0;  ///< m, |cloth - other|, in [0, thickness)
 };
 
+/// Incremental Potential Contact as an energy term: barriers between close pairs, with CCD
+/// bounding every step (see the comment at the top of contact.h, and docs/contact.md).
 class ContactTerm final : public EnergyTerm {
  public:
   /// Fails on invalid settings or obstacles, or a model without triangles.
@@ -177,10 +182,12 @@ class ContactTerm final : public EnergyTerm {
   /// Every collider's surface vertices where they are now, world, m: x, y, z each, in
   /// colliders_obj()'s vertex order (io/collider_export.h): a colliders.pc2 frame.
   Eigen::VectorXd collider_points() const;
-  /// Every obstacle vertex (ContactObstacles::vertex_count() of them) where it is now, and
-  /// where it was at the substep's start, world, m, 3 each: their difference is how far the
-  /// obstacles moved in the substep so far (what friction slides against).
+  /// Every obstacle vertex (ContactObstacles::vertex_count() of them) where it is now, world,
+  /// m, 3 each.
   const Eigen::VectorXd& obstacle_positions() const;
+  /// The same vertices where they were at the substep's start: the difference from
+  /// obstacle_positions() is how far the obstacles moved in the substep so far (what friction
+  /// slides against).
   const Eigen::VectorXd& obstacle_start_positions() const;
 
   /// The barrier stiffness in use (J/m^4).
@@ -192,10 +199,12 @@ class ContactTerm final : public EnergyTerm {
   /// resized; its capacity is reused.
   void contact_points(const Eigen::VectorXd& x, std::vector<ContactPoint>& out) const;
 
-  /// What the friction term (friction.h) lags from the same contacts: the settings, the
-  /// ground, and the primitives (an internal type of src/cloth/contact/).
+  /// The settings it was created with. This, ground_height() and geometry() are what the
+  /// friction term (friction.h) lags from the same contacts.
   const ContactSettings& settings() const;
+  /// The ground plane's height y (m), or none without a ground.
   std::optional<double> ground_height() const;
+  /// The cloth's and the obstacles' primitives (an internal type of src/cloth/contact/).
   const ContactGeometry& geometry() const;
 
  private:

@@ -14,6 +14,7 @@
 
 namespace animkit {
 
+/// What a convergence study runs: the step, how many steps, the tolerance and the solvers.
 struct ConvergenceStudyOptions {
   double dt = 1.0 / 60.0;  ///< seconds per step (one substep each), in kTimeStepRange
   int steps = 10;          ///< steps per solver, in [1, kMaxStudySteps]
@@ -23,6 +24,8 @@ struct ConvergenceStudyOptions {
   /// implicit integrator of the registry, in its order (so solvers added later join).
   std::vector<std::string> integrators;
 
+  /// An Error naming the first invalid field (dt, steps, tolerance, an unknown, non-iterative
+  /// or repeated integrator), or none.
   std::optional<Error> validate() const;
 };
 
@@ -35,34 +38,38 @@ struct CurvePoint {
   double relative_gradient = 1.0;  ///< |grad g(x)| / |grad g(y)|
 };
 
+/// One step of one solver in the study: its convergence curve, time and iterations.
 struct StudyStep {
   /// (0 ms, 1) at the prediction, then one point per iteration of the solver.
   std::vector<CurvePoint> curve;
-  double ms = 0.0;     ///< wall time of the whole step (ms), velocity update included
-  int iterations = 0;  ///< iterations of the solver (Newton iterations, sweeps, ...)
-  bool converged = false;
+  double ms = 0.0;         ///< wall time of the whole step (ms), velocity update included
+  int iterations = 0;      ///< iterations of the solver (Newton iterations, sweeps, ...)
+  bool converged = false;  ///< the solver met its stopping test (StepReport::converged)
   /// The relative gradient the solver stopped at: the tolerance, or the rounding floor of the
   /// stopping test when that is higher (implicit_substep.h).
   double relative_tolerance = 0.0;
 };
 
+/// Aggregates of one solver's steps (summarize_study()); all zero for no steps.
 struct StudySummary {
-  double ms_median = 0.0;  ///< median of StudyStep::ms over the steps
-  double ms_max = 0.0;
-  double iterations_median = 0.0;
+  double ms_median = 0.0;           ///< median of StudyStep::ms over the steps
+  double ms_max = 0.0;              ///< longest StudyStep::ms over the steps
+  double iterations_median = 0.0;   ///< median of StudyStep::iterations over the steps
   double converged_fraction = 0.0;  ///< steps that reached the tolerance, in [0, 1]
   int median_step = 0;              ///< index of a step whose time is the median (lower one)
 };
 
+/// One solver's part of the study.
 struct SolverStudy {
-  std::string integrator;  ///< registry name
-  std::vector<StudyStep> steps;
-  StudySummary summary;
+  std::string integrator;        ///< registry name
+  std::vector<StudyStep> steps;  ///< one per step, in order (ConvergenceStudyOptions::steps)
+  StudySummary summary;          ///< summarize_study() of `steps`
 };
 
+/// The result of a convergence study: every solver's steps over the same cloth.
 struct ConvergenceStudy {
-  double dt = 0.0;
-  double tolerance = 0.0;
+  double dt = 0.0;         ///< seconds per step, from the options
+  double tolerance = 0.0;  ///< the relative gradient every solver stopped at, from the options
   std::vector<SolverStudy> solvers;  ///< in the order of the options' integrators
 };
 

@@ -15,8 +15,10 @@
 
 namespace animkit {
 
+/// A thread-count-independent order of elements (springs or bends) for accumulating their
+/// terms into particles (see the comment at the top of element_schedule.h).
 struct ElementSchedule {
-  static constexpr int kSegments = 16;
+  static constexpr int kSegments = 16;  ///< segments the sorted elements are cut into
 
   std::vector<int> order;          ///< element indices, by highest particle (stable)
   std::vector<int> segment_start;  ///< kSegments + 1 offsets into `order`
@@ -28,6 +30,7 @@ struct ElementSchedule {
   template <class Elements>
   ElementSchedule(const Elements& elements, int particle_count);
 
+  /// Number of elements scheduled.
   int size() const { return static_cast<int>(order.size()); }
 
  private:

@@ -15,10 +15,14 @@ namespace animkit {
 /// One 3x3 block of a term's Hessian, at particles (row, col). A block with row != col stands
 /// for itself and its transpose at (col, row): terms list each off-diagonal pair once.
 struct HessianBlock {
-  int row = 0, col = 0;
-  Eigen::Matrix3d value = Eigen::Matrix3d::Zero();
+  /// Particle index of the block's rows.
+  int row = 0, col = 0;                             ///< particle index of the block's columns
+  Eigen::Matrix3d value = Eigen::Matrix3d::Zero();  ///< d^2 E / dx_row dx_col
 };
 
+/// An extra energy term E(x) of the implicit step's potential g, with the hooks Newton's
+/// integrators call around each substep and iterate. Subclasses implement name(), value(),
+/// add_gradient() and add_hessian(); the other hooks default to a term without moving parts.
 class EnergyTerm {
  public:
   virtual ~EnergyTerm() = default;

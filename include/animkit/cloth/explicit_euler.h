@@ -13,8 +13,11 @@ namespace animkit {
 void cloth_forces(const ClothModel& model, const Eigen::VectorXd& positions,
                   const Eigen::VectorXd& velocities, Eigen::VectorXd& forces);
 
+/// Explicit (symplectic) Euler: per substep v += h a(x, v), then x += h v. Takes no energy
+/// terms.
 class ExplicitEuler final : public ClothIntegrator {
  public:
+  /// Integrates `model`, which it shares (keeps alive).
   explicit ExplicitEuler(std::shared_ptr<const ClothModel> model);
 
   /// One substep of h, from `state` into `state`. `external_forces` (3N, may be null) are added

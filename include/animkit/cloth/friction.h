@@ -29,6 +29,7 @@
 
 namespace animkit {
 
+/// The friction coefficients per obstacle, ground and self-contact, and how friction is lagged.
 struct FrictionSettings {
   /// Coulomb coefficient mu between the cloth and each obstacle mesh, in the order of
   /// ContactObstacles::meshes (colliders' own ColliderDesc::friction); dimensionless, finite,
@@ -58,6 +59,8 @@ struct FrictionStats {
   int passes = 0;                 ///< lagging passes so far in the current substep, >= 0
 };
 
+/// IPC's lagged, smoothed Coulomb friction on the contact term's pairs, as an energy term
+/// (see the comment at the top of friction.h).
 class FrictionTerm final : public EnergyTerm {
  public:
   /// Friction on the pairs of `contact` (add it to the simulator after `contact`). Fails on
@@ -78,6 +81,7 @@ class FrictionTerm final : public EnergyTerm {
   void add_hessian(const Eigen::VectorXd& x, bool projected,
                    std::vector<HessianBlock>& blocks) const override;
 
+  /// The pairs and normal forces of the last lag, and the passes so far.
   FrictionStats stats() const;
 
  private:

@@ -16,7 +16,9 @@ struct GraphColoring {
   std::vector<int> vertices;  ///< every vertex once, grouped by colour, increasing within one
   std::vector<int> offsets;   ///< colour c holds vertices[offsets[c], offsets[c + 1])
 
+  /// Number of colours (0 for an empty colouring).
   int color_count() const { return offsets.empty() ? 0 : static_cast<int>(offsets.size()) - 1; }
+  /// Colour c's vertices, increasing; 0 <= c < color_count().
   std::span<const int> members(int c) const {
     return std::span<const int>(vertices).subspan(
         static_cast<std::size_t>(offsets[c]),

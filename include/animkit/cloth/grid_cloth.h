@@ -23,21 +23,21 @@ enum class GridPins {
 /// With a `material`, the sheet is physical instead (see material.h): sizes in metres, masses
 /// and stiffnesses from the material, bends instead of the distance-2 springs.
 struct GridClothOptions {
-  int cells = 10;       ///< n >= 1: cells per side, n + 1 particles per side
-  double size = 2.0;    ///< side length (scene units); spacing = size / cells
-  double height = 1.5;  ///< y of the plane
-  double mass = 1.0;    ///< per particle, > 0
-  double stiffness = 100.0;
-  double damping = 0.2;
-  double gravity = 0.3;
+  int cells = 10;            ///< n >= 1: cells per side, n + 1 particles per side
+  double size = 2.0;         ///< side length (scene units); spacing = size / cells
+  double height = 1.5;       ///< y of the plane
+  double mass = 1.0;         ///< per particle, > 0
+  double stiffness = 100.0;  ///< k of every spring (force per unit length), in kStiffnessRange
+  double damping = 0.2;      ///< the springs' dashpot coefficient (ClothDesc::damping)
+  double gravity = 0.3;      ///< acceleration along -y (units/s^2), in kGravityRange
   /// A physical material: replaces mass, stiffness and damping (and the distance-2 springs).
   std::optional<ClothMaterial> material = std::nullopt;
-  GridPins pins = GridPins::corners;
+  GridPins pins = GridPins::corners;  ///< which particles are pinned (default: the lab's corners)
   /// Placement of the sheet laid out as above: turned by `rotation` (unit) about its centre
   /// (size / 2, height, 0), then moved by `offset` (world space, scene units). Defaults: the
   /// lab's flat sheet where it is.
   Quat rotation = Quat::Identity();
-  Vec3 offset = Vec3::Zero();
+  Vec3 offset = Vec3::Zero();  ///< translation applied after the rotation (scene units)
 
   /// The first out-of-range option, or nothing. Cells are capped at kMaxGridCells; a material
   /// must give particle masses and stiffnesses inside parameter_ranges.h at this resolution.

@@ -27,6 +27,8 @@ struct GradientStop;  // implicit_substep.h
 /// factorization; Eigen still allocates O(N) scratch in each numeric factorization.
 class ImplicitEuler final : public ClothIntegrator {
  public:
+  /// Integrates `model` (shared: kept alive by this integrator) with the valid Newton settings
+  /// `options`; builds the chosen linear solver's structures once.
   ImplicitEuler(std::shared_ptr<const ClothModel> model, const NewtonSettings& options);
   ~ImplicitEuler() override;
 

@@ -21,7 +21,7 @@ inline double ms_since(StageClock::time_point start) {
 
 /// |grad g(x)| <= max(tolerance |grad g(y)|, the potential's rounding floor).
 struct GradientStop {
-  double stop = 0.0;
+  double stop = 0.0;  ///< the |grad g| at or below which the minimization has converged
   /// Written so that a NaN or an infinite norm never counts as converged (inf <= inf is true).
   bool reached(double norm) const { return std::isfinite(norm) && norm <= stop; }
 };

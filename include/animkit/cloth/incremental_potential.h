@@ -28,6 +28,8 @@
 
 namespace animkit {
 
+/// The incremental potential g of an implicit Euler step (see the comment at the top of
+/// incremental_potential.h), with its extra energy terms: value, differences, gradient and Hessian.
 class IncrementalPotential {
  public:
   /// Sizes the workspace for `model` (kept by reference: it must outlive this object).
@@ -35,6 +37,7 @@ class IncrementalPotential {
 
   /// Adds an energy term to g (kept and shared: the caller may keep changing its parameters).
   void add_term(std::shared_ptr<EnergyTerm> term) { terms_.push_back(std::move(term)); }
+  /// The added energy terms, in the order added.
   const std::vector<std::shared_ptr<EnergyTerm>>& terms() const { return terms_; }
 
   /// Sets up the step from `state` over time h > 0: y, x_n and the damping axes.
@@ -65,8 +68,9 @@ class IncrementalPotential {
 
   /// x_n, the step's start (from prepare()).
   const Eigen::VectorXd& start() const { return x_start_; }
-  /// The step h and, per spring, its dashpot's unit axis frozen at x_n (zero: no dashpot).
+  /// The step h (s), from prepare().
   double time_step() const { return h_; }
+  /// Per spring, its dashpot's unit axis frozen at x_n (zero: no dashpot).
   const std::vector<Vec3>& damping_axes() const { return damping_axis_; }
 
   /// The gradient norm below which |grad g| is rounding noise that no solver can shrink: every

@@ -11,6 +11,7 @@
 
 namespace animkit {
 
+/// A cloth integrator: advances a ClothState by one substep at a time.
 class ClothIntegrator {
  public:
   virtual ~ClothIntegrator() = default;

@@ -23,6 +23,7 @@ struct IntegratorTrial {
   bool diverged = false;     ///< a step diverged (the candidate is out)
 };
 
+/// What choose_integrator() picked, and how every candidate fared.
 struct IntegratorChoice {
   IntegratorSettings settings;          ///< the winner's defaults with the asked tolerance
   std::string_view name;                ///< the winner's registry name

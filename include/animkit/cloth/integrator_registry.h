@@ -9,10 +9,11 @@
 
 namespace animkit {
 
+/// One integrator of the registry: its name, help line, default settings and substeps.
 struct IntegratorEntry {
-  std::string_view name;     ///< what the CLI and the viewer accept, e.g. "implicit-pcg"
-  std::string_view summary;  ///< one line for menus and --help
-  IntegratorSettings defaults;
+  std::string_view name;        ///< what the CLI and the viewer accept, e.g. "implicit-pcg"
+  std::string_view summary;     ///< one line for menus and --help
+  IntegratorSettings defaults;  ///< its settings when the caller gives only its name
   /// Substeps per step when the caller asks for the default (0): explicit Euler needs many.
   int default_substeps = 1;
   /// Whether the integrator takes extra energy terms (contact, friction, air): Newton's do;

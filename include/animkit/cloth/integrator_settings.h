@@ -14,6 +14,7 @@ namespace animkit {
 /// Its only setting is how many substeps a step takes (SimulationOptions::substeps; the registry
 /// gives the lab's 1000 as its default).
 struct ExplicitEulerSettings {
+  /// Always none: there is nothing to check.
   std::optional<Error> validate() const { return std::nullopt; }
 };
 
@@ -48,13 +49,14 @@ enum class HessianProjection {
 
 /// Implicit Euler by Newton's method with a backtracking line search (docs/implicit-step.md).
 struct NewtonSettings {
-  LinearSolverKind linear_solver = LinearSolverKind::pcg;
+  LinearSolverKind linear_solver = LinearSolverKind::pcg;  ///< how each Newton system is solved
   /// Stops when |grad g| <= tolerance * |grad g at x = y|. (0, 1).
   double tolerance = 1e-6;
   int max_iterations = 50;         ///< Newton iterations per substep, >= 1
   double beta = 0.5;               ///< line-search step shrink factor, in (0, 1)
   double gamma = 1e-4;             ///< Armijo sufficient-decrease constant, in (0, 1)
   int max_line_search_steps = 50;  ///< backtracking reductions before giving up, >= 1
+  /// When the projected spring Hessian replaces the exact one.
   HessianProjection projection = HessianProjection::when_indefinite;
   bool record_iterations = false;  ///< fill StepReport::iterations
   /// IPC's stopping test on the Newton direction dx (Li et al. 2020; ipc-sim/IPC,
@@ -72,6 +74,7 @@ struct NewtonSettings {
   /// correction that the next iteration redoes.
   double linear_forcing = 0.0;
 
+  /// An Error naming the first setting out of its range above, or none.
   std::optional<Error> validate() const;
 };
 
@@ -94,6 +97,7 @@ struct VbdSettings {
   double gamma = 1e-4;
   int max_backtracks = 10;  ///< halvings of a vertex's step before it stays put, >= 0
 
+  /// An Error naming the first setting out of its range above, or none.
   std::optional<Error> validate() const;
 };
 
@@ -121,6 +125,8 @@ struct LocalGlobalSettings {
   bool monotone = true;
   bool record_iterations = false;  ///< fill StepReport::iterations
 
+  /// An Error naming the first setting out of its range above (tolerance, max_iterations,
+  /// spectral_radius, chebyshev_delay), or none.
   std::optional<Error> validate() const;
 };
 

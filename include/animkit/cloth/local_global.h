@@ -30,6 +30,8 @@ namespace animkit {
 /// changes), and allocates nothing per iteration (unless recording iterations).
 class LocalGlobal final : public ClothIntegrator {
  public:
+  /// Integrates `model` (shared: kept alive by this integrator) with the valid `settings`;
+  /// orders and analyses P once.
   LocalGlobal(std::shared_ptr<const ClothModel> model, const LocalGlobalSettings& settings);
 
   /// One substep of h > 0 from `state` into `state`; adds its numbers to `report` (the

@@ -24,6 +24,7 @@
 
 namespace animkit {
 
+/// The local/global method's constant matrix P(h) for one model, and its Cholesky factor.
 class LocalGlobalSystem {
  public:
   /// Builds the pattern of P for `model` (kept by reference) and analyses it.
@@ -33,6 +34,7 @@ class LocalGlobalSystem {
   /// Factorizes P(h) unless it already is factorized for this h. Returns whether it
   /// factorized (false: the factor of the previous call was kept).
   bool factorize(double h);
+  /// The h (s) of the current factor; 0 before the first factorize().
   double factorized_h() const { return h_; }
 
   /// Solves P x = r for the three coordinates at once: `rhs` is 3N, particle-major (the

@@ -21,6 +21,7 @@
 
 namespace animkit {
 
+/// A cloth material in physical units (SI), from which a sheet's masses and stiffnesses follow.
 struct ClothMaterial {
   double density = 0.15;  ///< areal density, kg/m^2, in (1e-4, 1e3]
   double stretch = 1000;  ///< membrane stretch stiffness C11 (Young's modulus x thickness), N/m
@@ -34,9 +35,10 @@ struct ClothMaterial {
   std::optional<Error> validate() const;
 };
 
+/// A named material (material_presets()) with the values' source.
 struct MaterialPreset {
-  std::string_view name;  ///< what --material accepts
-  ClothMaterial material;
+  std::string_view name;    ///< what --material accepts
+  ClothMaterial material;   ///< the material's values
   std::string_view source;  ///< where the values come from
 };
 

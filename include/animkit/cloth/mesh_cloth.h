@@ -22,6 +22,8 @@
 
 namespace animkit {
 
+/// How make_mesh_cloth() turns a triangle mesh into a cloth: the mesh, the parameters or a
+/// material, and the pins.
 struct MeshClothOptions {
   TriangleMesh mesh = {};  ///< the sheet at rest, world space (m with a material); manifold
   /// The lab's parameters, used without a material: mass per particle (> 0, kg or scene units),
@@ -29,9 +31,9 @@ struct MeshClothOptions {
   /// Springs join the ends of every edge and, across each interior edge, its two opposite
   /// vertices (what the grid's distance-2 springs are to its lines: bending resistance).
   double mass = 1.0;
-  double stiffness = 100.0;
-  double damping = 0.2;
-  double gravity = 0.3;  ///< along -y, units/s^2 (also with a material: 9.81 for SI)
+  double stiffness = 100.0;  ///< k of every spring, > 0, N/m (without a material)
+  double damping = 0.2;      ///< the springs' dashpot coefficient, >= 0 (without a material)
+  double gravity = 0.3;      ///< along -y, units/s^2 (also with a material: 9.81 for SI)
   /// A physical material: replaces mass, stiffness and damping (see above).
   std::optional<ClothMaterial> material = std::nullopt;
   /// The material's warp direction (world space, any length > 0; default +x), projected onto

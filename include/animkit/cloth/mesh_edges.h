@@ -9,12 +9,14 @@
 
 namespace animkit {
 
+/// One edge of a triangle mesh and the one or two triangles it borders.
 struct MeshEdge {
   std::array<int, 2> vertices{};  ///< the edge's vertices, lower index first
   /// The triangles (indices into TriangleMesh::triangles) on either side, in mesh order;
   /// triangles[1] is -1 on a border edge (one triangle).
   std::array<int, 2> triangles{-1, -1};
 
+  /// Whether two triangles share the edge (false on the border).
   bool interior() const { return triangles[1] >= 0; }
 };
 

@@ -15,6 +15,7 @@
 
 namespace animkit {
 
+/// How MultigridPcg builds and applies its smoothed aggregation hierarchy.
 struct MultigridOptions {
   int coarsest_nodes = 48;   ///< stop coarsening at or below this many nodes (3 unknowns each)
   int max_levels = 10;       ///< including the finest, >= 1
@@ -30,8 +31,10 @@ struct MultigridOptions {
 
 class SmoothedAggregation;
 
+/// Conjugate gradients preconditioned by a smoothed aggregation multigrid V-cycle.
 class MultigridPcg {
  public:
+  /// Builds the hierarchy's structure for `model` (kept by reference: it must outlive this).
   explicit MultigridPcg(const ClothModel& model, const MultigridOptions& options = {});
   ~MultigridPcg();
 
@@ -40,8 +43,9 @@ class MultigridPcg {
   PcgResult solve(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                   double tolerance, int max_iterations);
 
-  /// The hierarchy's levels (1: no coarsening) and the nodes on level l (0: the particles).
+  /// The hierarchy's number of levels (1: no coarsening).
   int level_count() const;
+  /// The number of nodes on `level` (0: the particles), 0 <= level < level_count().
   int level_nodes(int level) const;
 
   /// z = B r with the preconditioner set up by the last solve (for tests).

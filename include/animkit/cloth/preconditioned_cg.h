@@ -11,10 +11,11 @@
 
 namespace animkit {
 
+/// How a preconditioned CG solve ended.
 struct PcgResult {
-  int iterations = 0;
+  int iterations = 0;              ///< CG iterations done, one product with A each
   double relative_residual = 0.0;  ///< |b - A x| / |b| at exit
-  bool converged = false;
+  bool converged = false;          ///< |b - A x| <= tolerance |b| at exit (true at once for b = 0)
   /// The matrix showed a direction of non-positive curvature (p.Ap <= 0), or the preconditioned
   /// residual r.z was not positive: A (or its preconditioner) is not positive definite. The
   /// solve stops there; x holds the last iterate (a descent direction for any SPD part met).
@@ -24,9 +25,16 @@ struct PcgResult {
 /// CG's vectors and its sums' chunk workspace, sized once per model so a solve allocates
 /// nothing.
 struct CgWorkspace {
+  /// Sizes the vectors for `particles` particles (3 entries each) and one partial sum per chunk
+  /// of them.
   explicit CgWorkspace(int particles);
-  Eigen::VectorXd r, z, p, ap;
-  std::vector<std::array<double, 1>> partials;
+  /// Residual b - A x (3N).
+  Eigen::VectorXd r, z, p, ap;                  ///< A p (3N)
+  std::vector<std::array<double, 1>> partials;  ///< per-chunk partial sums of the dot products
+  /// \var z
+  /// Preconditioned residual B r (3N).
+  /// \var p
+  /// Search direction (3N).
 };
 
 /// z = B r for an SPD B ~ A^-1.

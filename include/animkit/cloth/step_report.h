@@ -21,8 +21,10 @@ struct IterationRecord {
   bool projected = false;        ///< solved with the projected Hessian (see HessianProjection)
 };
 
+/// What one ClothSimulator::step() did: its substeps, the solver's iterations and stopping
+/// test, the energy after it, and where its time went.
 struct StepReport {
-  int substeps = 1;
+  int substeps = 1;       ///< substeps the step is split into (SimulationOptions), >= 1
   int substeps_done = 0;  ///< substeps completed so far (while the step runs)
   /// Iterations of the implicit solver (Newton iterations, local/global iterations, VBD
   /// sweeps), summed over substeps (0 for explicit Euler).
@@ -47,17 +49,27 @@ struct StepReport {
   /// Time per stage (ms, summed over substeps): gradient and objective evaluations, Hessian
   /// assembly, linear solves, line search; with energy terms also their per-iterate updates
   /// (e.g. finding contact pairs) and step bounds (e.g. continuous collision detection).
+  /// This one: gradient and objective evaluations.
   double ms_gradient = 0.0, ms_hessian = 0.0, ms_linear_solve = 0.0, ms_line_search = 0.0;
-  double ms_term_updates = 0.0, ms_step_bound = 0.0;
+  /// Time in energy terms' per-iterate updates, e.g. finding contact pairs (ms, summed over
+  /// substeps).
+  double ms_term_updates = 0.0, ms_step_bound = 0.0;  ///< time in the terms' step bounds (ms)
   /// The smallest fraction of a Newton step (or of the move from x_n to y) the energy terms
   /// admitted (EnergyTerm::max_step), 1 when none bounded a step.
   double step_bound_min = 1.0;
-  /// With contact (contact.h), at the step's end: pairs closer than the contact distance and
-  /// the smallest distance among them (m; the contact distance when none is that close).
+  /// Whether a contact term (contact.h) filled contact_pairs and min_contact_distance in, at
+  /// the step's end.
   bool has_contact = false;
-  int contact_pairs = 0;
+  int contact_pairs = 0;  ///< pairs closer than the contact distance (thickness)
+  /// The smallest distance among those pairs (m; the contact distance when none is that close).
   double min_contact_distance = 0.0;
   std::vector<IterationRecord> iterations;  ///< empty unless recording was asked for
+  /// \var ms_hessian
+  /// Time in Hessian assembly (ms, summed over substeps).
+  /// \var ms_linear_solve
+  /// Time in linear solves (ms, summed over substeps).
+  /// \var ms_line_search
+  /// Time in line searches (ms, summed over substeps).
 };
 
 }  // namespace animkit

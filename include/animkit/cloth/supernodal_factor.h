@@ -12,6 +12,7 @@
 
 namespace animkit {
 
+/// A sparse Cholesky factor L stored by supernodes, for solves with three right-hand sides.
 class SupernodalFactor {
  public:
   /// Takes L's values (lower triangular, compressed column-major, each column's rows sorted
@@ -23,6 +24,7 @@ class SupernodalFactor {
   /// Solves L L^T x = b in place; x holds row i's three right-hand sides at x[3i..3i+2].
   void solve(double* x) const;
 
+  /// Number of supernodes found (0 before the first assign()).
   int supernode_count() const { return static_cast<int>(supernodes_.size()); }
 
  private:

@@ -34,11 +34,14 @@ namespace animkit {
 /// (1 without acceleration).
 class VertexBlockDescent final : public ClothIntegrator {
  public:
+  /// Integrates `model` (shared: kept alive by this integrator) with the valid `options`;
+  /// colours the particles and gathers their incident springs and bends once.
   VertexBlockDescent(std::shared_ptr<const ClothModel> model, const VbdSettings& options);
 
   void step(ClothState& state, double h, StepReport& report,
             const Eigen::VectorXd* external_forces = nullptr) override;
 
+  /// The particles' colouring the sweeps follow (color_cloth_particles() of the model).
   const GraphColoring& coloring() const { return coloring_; }
 
  private:

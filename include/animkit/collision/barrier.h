@@ -18,6 +18,8 @@
 
 namespace animkit {
 
+/// IPC's log barrier b(d) on a squared distance d with squared activation distance dhat, and its
+/// first and second derivatives in d (formulas in the comment at the top of this header).
 class LogBarrier {
  public:
   /// dhat: the squared activation distance (squared position units), finite and > 0.
@@ -30,6 +32,7 @@ class LogBarrier {
     return LogBarrier(dhat);
   }
 
+  /// The squared activation distance (squared position units): b, b' and b'' are 0 for d >= dhat.
   double dhat() const { return dhat_; }
 
   /// b(d) for a squared distance d > 0 (the barrier is infinite at contact; CCD keeps d > 0).

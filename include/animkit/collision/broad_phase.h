@@ -26,15 +26,20 @@
 
 namespace animkit {
 
+/// A vertex and a triangle whose distance may fall below the radius. The ContactCandidates list
+/// holding the pair says which mesh (the cloth's or the collider's) each index refers to.
 struct VertexTriangleCandidate {
-  int vertex = 0;
-  int triangle = 0;
+  int vertex = 0;    ///< vertex index, >= 0
+  int triangle = 0;  ///< triangle index, >= 0 (in self pairs, never a triangle of the vertex)
+  /// Lexicographic order (vertex, then triangle), used to sort the candidate lists.
   auto operator<=>(const VertexTriangleCandidate&) const = default;
 };
 
+/// Two edges whose distance may fall below the radius; self pairs never share a vertex.
 struct EdgeEdgeCandidate {
   int edge_a = 0;  ///< edge index in the first mesh
   int edge_b = 0;  ///< edge index in the second mesh (> edge_a for self pairs)
+  /// Lexicographic order (edge_a, then edge_b), used to sort the candidate lists.
   auto operator<=>(const EdgeEdgeCandidate&) const = default;
 };
 
@@ -47,19 +52,23 @@ struct ContactCandidates {
   std::vector<VertexTriangleCandidate> collider_vertex_triangle;  ///< collider vertex, mesh tri
   std::vector<EdgeEdgeCandidate> edge_collider_edge;              ///< mesh edge, collider edge
 
+  /// Empties all five lists (keeping their capacity).
   void clear();
+  /// The number of candidates in all five lists together.
   std::size_t size() const;
 };
 
 namespace broad_phase_detail {
 /// A primitive's swept, inflated box (world space).
 struct Box {
-  Vec3 lo, hi;
+  /// Lower corner (componentwise minimum), world space.
+  Vec3 lo, hi;  ///< upper corner (componentwise maximum), world space
 };
 /// A primitive (global index over both meshes' vertices, edges, triangles) in a grid cell.
 struct CellEntry {
-  std::uint64_t cell;
-  int primitive;
+  std::uint64_t cell;  ///< linear index (i * ny + j) * nz + k of the grid cell (i, j, k)
+  int primitive;       ///< global primitive index: the box's index in the box list
+  /// Lexicographic order (cell, then primitive).
   auto operator<=>(const CellEntry&) const = default;
 };
 }  // namespace broad_phase_detail
@@ -67,9 +76,9 @@ struct CellEntry {
 /// A mesh and its vertices' positions at the start and the end of a linear motion: 3 doubles per
 /// vertex (x0 y0 z0 x1 ...), world space. For one configuration pass the same vector twice.
 struct MeshMotion {
-  const CollisionMesh& mesh;
-  const Eigen::VectorXd& start;
-  const Eigen::VectorXd& end;
+  const CollisionMesh& mesh;     ///< the mesh's edges and triangles
+  const Eigen::VectorXd& start;  ///< positions at t = 0, 3 * mesh.vertex_count entries
+  const Eigen::VectorXd& end;    ///< positions at t = 1, 3 * mesh.vertex_count entries
 };
 
 /// The spatial hash. Keeps its work vectors between calls: reuse one object per simulation so a

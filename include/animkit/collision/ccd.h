@@ -31,6 +31,7 @@
 
 namespace animkit {
 
+/// Parameters of Additive CCD (the walk described at the top of this header).
 struct AdditiveCcdSettings {
   /// s in (0, 1): the fraction of the initial gap kept at the returned time. Default 0.1 (C-IPC's
   /// choice; ipc-toolkit's conservative rescaling 0.9).
@@ -46,6 +47,7 @@ struct AdditiveCcdSettings {
   std::optional<Error> validate() const;
 };
 
+/// What a CCD query found: how far along the motion is safe and whether it was cut short.
 struct CcdResult {
   /// t* in [0, max_time]: the motion is safe up to this time (see the guarantee above).
   double time_of_impact = 1.0;

@@ -16,10 +16,12 @@
 
 namespace animkit {
 
+/// The editable description of a collider (its shape, motion, friction and surface level), from
+/// which Collider::create() builds a Collider. Plain data: check it with validate().
 struct ColliderDesc {
   /// Names the collider in errors, OBJ objects and menus: non-empty, no control characters.
   std::string name = "collider";
-  ColliderShape shape = SphereShape{};
+  ColliderShape shape = SphereShape{};  ///< in the local frame; a sphere of radius 0.5 m by default
   ColliderMotion motion = ScriptedMotion{};  ///< at rest at the origin by default
   /// Coulomb friction coefficient mu between the cloth and this collider, dimensionless,
   /// finite and >= 0 (0: frictionless), default 0.3.
@@ -45,20 +47,26 @@ std::optional<Error> validate_colliders(const std::vector<ColliderDesc>& collide
 
 /// What a Collider shares between copies and never changes.
 struct ColliderModel {
-  ColliderDesc desc;
+  ColliderDesc desc;                      ///< the (valid) description the model was built from
   TriangleMesh surface;                   ///< collider_surface(shape), local frame
   std::vector<std::array<int, 2>> edges;  ///< surface_edges(surface)
   Eigen::AlignedBox3d surface_bounds;     ///< of the surface's vertices, local frame
 };
 
+/// A collider built from a ColliderDesc: an immutable ColliderModel, shared between copies, plus
+/// this instance's time, pose and world-space surface vertices, which change as it moves.
 class Collider {
  public:
   /// Validates `desc`, builds its surface and places it at time t (s, finite).
   static Result<Collider> create(const ColliderDesc& desc, double t = 0.0);
 
+  /// The immutable model: description, local surface mesh, its edges and bounds.
   const ColliderModel& model() const { return *model_; }
+  /// The same model as a shared pointer (never null), shared by every copy of this collider.
   const std::shared_ptr<const ColliderModel>& shared_model() const { return model_; }
+  /// The description's name (non-empty).
   const std::string& name() const { return model_->desc.name; }
+  /// The description's Coulomb friction coefficient mu, dimensionless, >= 0.
   double friction() const { return model_->desc.friction; }
   /// A plane: contact takes it as the half-space below it, not as its drawn square. Its
   /// boundary passes through pose().position with unit normal pose().rotation * +y.
@@ -69,7 +77,9 @@ class Collider {
   /// Places the collider at `pose` (finite, unit rotation) at time t, off its motion: where
   /// a user dragged it, as the solver reports it (ContactTerm::collider_pose).
   void set_pose(double t, const RigidPose& pose);
+  /// The time the collider was last placed at by create(), set_time() or set_pose(), s.
   double time() const { return time_; }
+  /// The pose at time(): the motion's, or the one given to set_pose().
   const RigidPose& pose() const { return pose_; }
   /// The surface's vertices at time(), world space, in the model's surface vertex order.
   const std::vector<Vec3>& world_vertices() const { return world_vertices_; }

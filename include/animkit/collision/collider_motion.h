@@ -15,7 +15,9 @@ struct RigidPose {
   Vec3 position = Vec3::Zero();      ///< world space, m: where the local origin is
   Quat rotation = Quat::Identity();  ///< local to world, unit
 
+  /// A point given in the local frame, in world space: rotation * local + position.
   Vec3 to_world(const Vec3& local) const { return rotation * local + position; }
+  /// The inverse of to_world(): a world point in the local frame (rotation assumed unit).
   Vec3 to_local(const Vec3& world) const { return rotation.conjugate() * (world - position); }
 };
 
@@ -28,6 +30,7 @@ struct ScriptedMotion {
   Vec3 angular_velocity = Vec3::Zero();  ///< world space, rad/s, finite
 };
 
+/// One pose of a KeyframedMotion and the time the collider reaches it.
 struct Keyframe {
   double time = 0.0;                 ///< s, finite
   Vec3 position = Vec3::Zero();      ///< world space, m

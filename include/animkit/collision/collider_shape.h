@@ -37,7 +37,7 @@ struct CapsuleShape {
 /// Any triangle mesh, local coordinates in m. Closed and outward-oriented (counter-clockwise
 /// seen from outside) for inside() to mean anything; contact works with open meshes too.
 struct MeshShape {
-  TriangleMesh mesh;
+  TriangleMesh mesh;  ///< local frame, m: a valid mesh, every |coordinate| <= kMaxColliderSize
 };
 
 using ColliderShape = std::variant<PlaneShape, SphereShape, BoxShape, CapsuleShape, MeshShape>;

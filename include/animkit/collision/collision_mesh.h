@@ -11,8 +11,10 @@
 
 namespace animkit {
 
+/// A mesh's contact primitives: its vertex count, unique edges and triangles (no positions).
+/// Make one with build_collision_mesh().
 struct CollisionMesh {
-  int vertex_count = 0;
+  int vertex_count = 0;  ///< number of vertices, >= 0; positions come as 3 * vertex_count doubles
   /// Unique edges of the triangles, each (lower index, higher index), sorted.
   std::vector<std::array<int, 2>> edges;
   /// The triangles as given (vertex indices in [0, vertex_count)).

@@ -26,9 +26,11 @@ namespace animkit {
 /// function takes its points.
 template <int Vertices>
 struct StencilDerivatives {
-  static constexpr int kDofs = 3 * Vertices;
-  double value = 0.0;
+  static constexpr int kDofs = 3 * Vertices;  ///< number of coordinates: 3 per vertex
+  double value = 0.0;                         ///< the function's value
+  /// First derivatives with respect to the kDofs coordinates.
   Eigen::Matrix<double, kDofs, 1> gradient = Eigen::Matrix<double, kDofs, 1>::Zero();
+  /// Second derivatives (symmetric kDofs x kDofs) with respect to the kDofs coordinates.
   Eigen::Matrix<double, kDofs, kDofs> hessian = Eigen::Matrix<double, kDofs, kDofs>::Zero();
 };
 

@@ -6,10 +6,13 @@
 
 namespace animkit {
 
+/// Why an operation failed: the error half of Result<T>.
 struct Error {
+  /// What went wrong, in words a user can act on ("bone 3 has zero length").
   std::string message;
 };
 
+/// Either a T or the Error that prevented computing it.
 template <class T>
 using Result = std::expected<T, Error>;
 

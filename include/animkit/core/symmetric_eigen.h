@@ -9,11 +9,14 @@
 
 namespace animkit {
 
+/// Eigendecomposition A = U diag(lambda) U^T of a symmetric matrix that reuses its scratch
+/// storage, so repeated compute() calls on same-sized matrices do not allocate.
 class SymmetricEigen {
  public:
   /// Decomposes the symmetric `a` (its lower triangle is read). Eigenvalues ascending.
   void compute(const Eigen::MatrixXd& a);
 
+  /// The eigenvalues of the last compute(), in ascending order.
   const Eigen::VectorXd& eigenvalues() const { return eigenvalues_; }
   /// Column i is the unit eigenvector of eigenvalues()[i].
   const Eigen::MatrixXd& eigenvectors() const { return eigenvectors_; }

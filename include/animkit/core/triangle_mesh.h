@@ -10,6 +10,7 @@
 
 namespace animkit {
 
+/// A triangle mesh as plain data: vertex positions and index triples (see the file overview).
 struct TriangleMesh {
   std::vector<Vec3> vertices;  ///< positions, scene units (m for physical scenes)
   /// Vertex indices (0-based), counter-clockwise seen from the side the normal points to.

@@ -17,10 +17,12 @@ inline constexpr double kUnitTolerance = 1e-6;
 /// Bones shorter than this are treated as zero length: their direction is undefined.
 inline constexpr double kMinBoneLength = 1e-9;
 
+/// Every coordinate of `v` finite (no NaN or infinity).
 inline bool is_finite(const Vec3& v) {
   return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
 }
 
+/// Every component of `q` (w, x, y, z) finite (no NaN or infinity).
 inline bool is_finite(const Quat& q) {
   return std::isfinite(q.w()) && std::isfinite(q.x()) && std::isfinite(q.y()) &&
          std::isfinite(q.z());
@@ -54,9 +56,12 @@ inline std::string to_string(const Vec3& v) {
 /// the solvers multiply positions, speeds and coefficients together, and past these bounds a
 /// step computes infinities (a collider thrown at 1e300 m/s wrote `inf` into its cache).
 struct ParameterRange {
-  double min, max;
+  /// Lowest accepted value (included).
+  double min, max;  ///< highest accepted value (included)
 
+  /// True when `value` is finite and min <= value <= max.
   bool contains(double value) const { return std::isfinite(value) && value >= min && value <= max; }
+  /// True when each coordinate of `v` is finite and within [min, max].
   bool contains(const Vec3& v) const {
     return contains(v.x()) && contains(v.y()) && contains(v.z());
   }

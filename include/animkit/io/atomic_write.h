@@ -11,19 +11,24 @@
 
 namespace animkit {
 
+/// A file being written whole or not at all: a temporary beside the destination that commit()
+/// renames over it, and the destructor removes if it was never committed.
 class AtomicFile {
  public:
   /// Creates the temporary for `path` (O_CREAT | O_EXCL | O_NOFOLLOW) after removing stale
   /// temporaries of dead runs from its folder. Errors name `path` and the reason.
   static Result<AtomicFile> create(const std::filesystem::path& path);
 
+  /// Takes over `other`'s open temporary; `other` is left owning nothing.
   AtomicFile(AtomicFile&& other) noexcept;
+  /// Not assignable: an AtomicFile stays bound to the destination it was created for.
   AtomicFile& operator=(AtomicFile&&) = delete;
   /// An uncommitted file is abandoned: the temporary is removed, `path` stays as it was.
   ~AtomicFile();
 
   /// Where to write (binary). Valid until commit().
   std::FILE* stream() const { return file_; }
+  /// The destination: where the file appears once commit() succeeds.
   const std::filesystem::path& path() const { return path_; }
 
   /// Ends the write: flushes, syncs and closes, then renames the temporary over path(). `ok`

@@ -18,6 +18,7 @@
 
 namespace animkit {
 
+/// One job of a batch: an animkit command line and the name of its results folder.
 struct BatchJob {
   /// The job's results folder under the batch's output folder: letters, digits, '.', '_' and
   /// '-' (not starting with '.'), at most 100 characters, unique in the batch.

@@ -16,18 +16,21 @@
 
 namespace animkit {
 
+/// How a batch job ended: it ran and exited 0, it failed (non-zero exit, a signal, or it could
+/// not start), or it was skipped because an earlier run's complete results were already there.
 enum class BatchStatus { ok, failed, skipped };
 
 /// "ok", "failed", "skipped".
 std::string_view batch_status_name(BatchStatus status);
 
+/// What became of one batch job: one entry of OUT/batch.json.
 struct BatchJobResult {
-  std::string name;
-  std::vector<std::string> args;
-  BatchStatus status = BatchStatus::ok;
+  std::string name;                      ///< the job's name (BatchJob::name): its folder under OUT
+  std::vector<std::string> args;         ///< the job's command line after "animkit", without --out
+  BatchStatus status = BatchStatus::ok;  ///< how the job ended
   int exit_code = 0;  ///< the process's (128 + signal when a signal ended it)
-  /// Seconds since the batch began when the job started and ended (both 0 when skipped).
-  double started = 0.0, finished = 0.0;
+  /// Seconds since the batch began when the job started (0 when skipped).
+  double started = 0.0, finished = 0.0;  ///< likewise when it ended (0 when skipped)
   /// A failed job's error: its last "animkit: error:" line, else its last line, else why it
   /// could not start.
   std::string error;
@@ -36,6 +39,7 @@ struct BatchJobResult {
   bool ended = false;
 };
 
+/// How run_batch runs the jobs and where it puts their results.
 struct BatchSettings {
   std::filesystem::path program;  ///< the animkit executable the jobs run
   std::filesystem::path out;      ///< the batch's folder (created if needed)

@@ -51,7 +51,9 @@ struct BvhClip {
   /// units times the read scale.
   Eigen::MatrixXd motion;
 
+  /// Joints in the skeleton, End Sites included.
   int joint_count() const { return skeleton.joint_count(); }
+  /// Frames of motion: the rows of `motion`.
   int frame_count() const { return static_cast<int>(motion.rows()); }
   /// Sum of the joints' channel counts.
   int channel_count() const;

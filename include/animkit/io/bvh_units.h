@@ -9,6 +9,7 @@
 
 namespace animkit {
 
+/// A BVH clip scaled to metres, with the scale used and how it was chosen.
 struct MetricClip {
   BvhClip clip;                  ///< offsets and positions in metres
   double metres_per_unit = 1.0;  ///< of the file

@@ -20,19 +20,21 @@ namespace animkit {
 
 /// What cloth.glb holds.
 struct ClothAnimation {
-  int vertex_count = 0;
-  std::vector<std::array<int, 3>> triangles;
+  int vertex_count = 0;                       ///< vertices of the sheet
+  std::vector<std::array<int, 3>> triangles;  ///< the sheet's triangles, 0-based vertex indices
   double frame_time = 1.0 / 60.0;  ///< seconds between frames (> 0)
   /// Frame after frame, vertex_count x (x, y, z) each; frame 0 is the mesh as it starts.
   std::vector<float> positions;
 
+  /// One collider: its surface and its rigid pose at every frame.
   struct ColliderTrack {
-    std::string name;
+    std::string name;              ///< names its glTF mesh and node
     TriangleMesh surface;          ///< in the collider's own frame
     std::vector<RigidPose> poses;  ///< one per frame
   };
-  std::vector<ColliderTrack> colliders;
+  std::vector<ColliderTrack> colliders;  ///< each with one pose per frame; may be empty
 
+  /// Whole frames in `positions` (0 without vertices).
   int frame_count() const {
     return vertex_count > 0 ? static_cast<int>(positions.size() / (3 * vertex_count)) : 0;
   }

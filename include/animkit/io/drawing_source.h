@@ -14,10 +14,13 @@
 
 namespace animkit {
 
+/// What a drawing is made from: a built-in shape, text, an image file (read as gray), one image
+/// of an MNIST file, or a CSV of points (curve_csv.h).
 enum class DrawingSourceKind { shape, text, image, mnist, curve };
 
+/// Where a drawing comes from: its kind and the fields that kind reads (the others are ignored).
 struct DrawingSource {
-  DrawingSourceKind kind = DrawingSourceKind::shape;
+  DrawingSourceKind kind = DrawingSourceKind::shape;  ///< which of the fields below are read
   std::string shape = "circle";  ///< kind shape: a lab shape or "spiral" (builtin_shape_names)
   std::string text;              ///< kind text: UTF-8, '\n' starts a new line
   TextOptions text_options;      ///< kind text: font, tolerance, centre lines
@@ -26,6 +29,7 @@ struct DrawingSource {
   ImageStrokeOptions image;      ///< kinds image, mnist
 };
 
+/// How a drawing's strokes are placed and sampled for the arm.
 struct DrawingLayout {
   /// Resample every stroke by arc length to this spacing (scene units, > 0). Text, images and
   /// curves default to 0.01; built-in shapes keep the lab's own sampling unless it is given.
@@ -33,13 +37,15 @@ struct DrawingLayout {
   /// Where text, images and curves go; default reachable_box() of the arm (fill 0.7).
   /// Built-in shapes keep the lab's coordinates.
   std::optional<DrawingBox> box = std::nullopt;
-  TravelOptions travel = {};
+  TravelOptions travel = {};  ///< pen-up moves between strokes: lift height and target spacing
 };
 
+/// A drawing ready for the arm: its targets (strokes on the plane y = 0, pen-up travel above it)
+/// and how it was sampled.
 struct PreparedDrawing {
   std::string name;  ///< e.g. "star", "text QD", "image seven.png", "mnist digits.idx #3"
-  Trajectory trajectory;
-  int strokes = 0;
+  Trajectory trajectory;        ///< pen-down stroke targets joined by pen-up travel (scene units)
+  int strokes = 0;              ///< pen-down strokes in the trajectory
   SpacingStats spacing_before;  ///< of the placed strokes before resampling (scene units)
   SpacingStats spacing_after;   ///< of the strokes the arm is given
 };

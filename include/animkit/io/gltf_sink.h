@@ -9,6 +9,8 @@
 
 namespace animkit {
 
+/// Writes cloth.glb at the end of a run that did not diverge, keeping every frame in memory
+/// until then.
 class GltfSink final : public ClothSink {
  public:
   /// `path`: the file to write, e.g. OUT/cloth.glb.
@@ -16,8 +18,11 @@ class GltfSink final : public ClothSink {
 
   /// Refuses a run whose frames would not fit a .glb (cloth_glb_fits), before it starts.
   Result<void> begin(const ClothFrame& start, int frames, double dt) override;
+  /// Keeps the frame's positions and collider poses in memory.
   Result<void> frame(const ClothFrame& frame) override;
+  /// Writes the file atomically unless the run diverged; drops the kept frames either way.
   Result<void> finish(const ClothRun& run, const ClothFrame& last) override;
+  /// Drops the kept frames without writing anything.
   void abandon() override { animation_ = {}; }
 
  private:

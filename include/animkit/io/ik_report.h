@@ -12,9 +12,10 @@ namespace animkit {
 
 /// How a drawing was sampled, for the reports (see PreparedDrawing).
 struct DrawingStats {
-  int strokes = 0;
-  int pen_up_targets = 0;
-  SpacingStats spacing_before, spacing_after;
+  int strokes = 0;         ///< pen-down strokes
+  int pen_up_targets = 0;  ///< targets of the pen-up travel between strokes
+  /// Spacing of the placed strokes before resampling (scene units).
+  SpacingStats spacing_before, spacing_after;  ///< spacing of the strokes the arm is given
 };
 
 /// What the run was: names printed into the reports.

@@ -9,12 +9,17 @@
 
 namespace animkit {
 
+/// Writes DIR/cloth.obj and, with colliders, DIR/colliders.obj: the starting meshes.
 class ObjSink final : public ClothSink {
  public:
+  /// Writes into `dir`.
   explicit ObjSink(std::filesystem::path dir) : dir_(std::move(dir)) {}
 
+  /// Renders the starting sheet and colliders to OBJ text, kept until finish().
   Result<void> begin(const ClothFrame& start, int frames, double dt) override;
+  /// Does nothing: only the start is written.
   Result<void> frame(const ClothFrame&) override { return {}; }
+  /// Writes the files, each atomically, unless the run diverged.
   Result<void> finish(const ClothRun& run, const ClothFrame& last) override;
 
  private:

@@ -31,8 +31,11 @@ class Pc2Writer {
   /// same frame_start, shows the first sample).
   static Result<Pc2Writer> open(const std::filesystem::path& path, int points,
                                 float start_frame = 0.0f);
+  /// Takes over `other`'s unfinished file; `other` is left holding none.
   Pc2Writer(Pc2Writer&& other) noexcept;
+  /// Not assignable: a writer stays bound to the file it opened.
   Pc2Writer& operator=(Pc2Writer&&) = delete;
+  /// An unfinished file is abandoned: its temporary is removed, `path` stays as it was.
   ~Pc2Writer();
 
   /// Appends one frame: 3 * points coordinates.
@@ -50,9 +53,10 @@ class Pc2Writer {
 
 /// A PC2 file read back: frames[k] holds 3 * points coordinates.
 struct PointCache {
-  int points = 0;
-  float start_frame = 0.0f, sample_rate = 1.0f;
-  std::vector<std::vector<float>> frames;
+  int points = 0;  ///< points per frame (the header's)
+  /// The header's first frame (Pc2Writer::open's `start_frame`).
+  float start_frame = 0.0f, sample_rate = 1.0f;  ///< frames between samples (1 as written here)
+  std::vector<std::vector<float>> frames;        ///< one per sample, (x, y, z) per point
 };
 /// Largest point cache read (a 100 x 100 cloth for 10 000 frames is about 1.2 GB).
 constexpr std::uintmax_t kMaxPc2FileBytes = std::uintmax_t{2} << 30;

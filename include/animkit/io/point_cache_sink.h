@@ -13,8 +13,9 @@
 
 namespace animkit {
 
+/// What PointCacheSink writes and how it places the positions.
 struct PointCacheOptions {
-  std::string cloth_file = "cloth.pc2";
+  std::string cloth_file = "cloth.pc2";  ///< the cloth's cache, a file name in the sink's folder
   /// Whether moving colliders get colliders.pc2.
   bool colliders = true;
   /// Applied to every cloth position before it is written: e.g. into a Blender object's local
@@ -23,14 +24,22 @@ struct PointCacheOptions {
   float start_frame = 0.0f;  ///< the files' first frame (Pc2Writer::open)
 };
 
+/// Streams cloth.pc2 (and colliders.pc2 when a collider moves) frame by frame into temporaries
+/// that become the files at the end of a run that did not diverge.
 class PointCacheSink final : public ClothSink {
  public:
+  /// Writes into `dir` as `options` say.
   explicit PointCacheSink(std::filesystem::path dir, PointCacheOptions options = {})
       : dir_(std::move(dir)), options_(std::move(options)) {}
 
+  /// Opens the caches (colliders.pc2 only when options.colliders is set and a collider moves)
+  /// and writes frame 0, the start.
   Result<void> begin(const ClothFrame& start, int frames, double dt) override;
+  /// Appends the frame's cloth positions (transformed) and posed collider vertices.
   Result<void> frame(const ClothFrame& frame) override;
+  /// Renames the caches into place; a diverged run, or a failure, leaves neither file.
   Result<void> finish(const ClothRun& run, const ClothFrame& last) override;
+  /// Closes the caches and removes their temporaries.
   void abandon() override;
 
  private:

@@ -21,7 +21,7 @@ struct ReachLabel {
   std::string solver;  ///< "dls", ...
   std::string limits;  ///< the limits file, or a description of the defaults
   double scale = 1.0;  ///< metres per file unit
-  Vec3 target = Vec3::Zero();
+  Vec3 target = Vec3::Zero();  ///< where the hand was sent, world space (m)
 };
 
 /// Width and height of reach.png: the front and side views side by side.

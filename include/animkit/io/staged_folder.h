@@ -19,6 +19,8 @@ namespace animkit {
 /// The list of a results folder's entries, written into it by StagedFolder::commit().
 inline constexpr const char* kOutputListName = ".animkit-outputs";
 
+/// An output folder being filled beside its target and swapped in whole by commit(); removed,
+/// leaving the target untouched, if it is never committed.
 class StagedFolder {
  public:
   /// Checks the target and creates the staging folder beside it (creating the target's parent
@@ -27,7 +29,9 @@ class StagedFolder {
   /// contains it; its parent cannot be written.
   static Result<StagedFolder> begin(const std::filesystem::path& target);
 
+  /// Takes over `other`'s staging folder; `other` is left owning nothing.
   StagedFolder(StagedFolder&& other) noexcept;
+  /// Not assignable: a staged folder stays bound to the target it was begun for.
   StagedFolder& operator=(StagedFolder&&) = delete;
   /// Uncommitted: the staging folder and everything in it are removed; the target is untouched.
   ~StagedFolder();

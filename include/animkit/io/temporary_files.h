@@ -27,10 +27,15 @@ bool is_animkit_temporary(std::string_view name, pid_t& pid);
 /// process. A handle unregisters on destruction or release(); moves transfer it.
 class CleanupHandle {
  public:
+  /// A handle that registers nothing.
   CleanupHandle() = default;
+  /// Registers `path` for removal if a signal stops the process.
   explicit CleanupHandle(const std::filesystem::path& path);
+  /// Takes over `other`'s registration; `other` is left holding none.
   CleanupHandle(CleanupHandle&& other) noexcept;
+  /// Releases this handle's registration, then takes over `other`'s.
   CleanupHandle& operator=(CleanupHandle&& other) noexcept;
+  /// Releases the registration (the path itself is left alone).
   ~CleanupHandle();
 
   /// Stops watching the path (it was renamed into place or removed).
@@ -44,11 +49,17 @@ class CleanupHandle {
 /// handle semantics as CleanupHandle.
 class ChildHandle {
  public:
+  /// A handle that registers nothing.
   ChildHandle() = default;
+  /// Registers the child process `pid` to be killed if a signal stops this process.
   explicit ChildHandle(pid_t pid);
+  /// Takes over `other`'s registration; `other` is left holding none.
   ChildHandle(ChildHandle&& other) noexcept;
+  /// Releases this handle's registration, then takes over `other`'s.
   ChildHandle& operator=(ChildHandle&& other) noexcept;
+  /// Releases the registration (the child itself is left alone).
   ~ChildHandle();
+  /// Stops watching the child (it has ended and been waited for).
   void release();
 
  private:

@@ -17,14 +17,17 @@ namespace animkit {
 /// DejaVu Sans from Debian's fonts-dejavu-core.
 inline const std::filesystem::path kDefaultFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
+/// How text becomes strokes: the font, the flattening tolerance and outline or centre line.
 struct TextOptions {
-  std::filesystem::path font = kDefaultFont;
+  std::filesystem::path font = kDefaultFont;  ///< a TrueType/OpenType font file
   /// Largest distance between a curve and its flattened polyline, as a fraction of the em
   /// (the font's size). In (0, 0.1].
   double tolerance = 0.002;
   /// Draw each glyph's centre line instead of its outline.
   bool centerline = false;
 
+  /// The first out-of-range option (a tolerance outside (0, 0.1]), or nothing. The font file is
+  /// not checked here.
   std::optional<Error> validate() const;
 };
 

@@ -22,6 +22,8 @@ std::optional<std::filesystem::path> find_program(std::string_view name);
 /// find_program("ffmpeg").
 std::optional<std::filesystem::path> find_ffmpeg();
 
+/// A video being encoded by an ffmpeg child process, renamed into place by finish() once checked
+/// complete.
 class VideoWriter {
  public:
   /// Starts ffmpeg (no shell in between) for a width x height video at `fps` frames per
@@ -33,7 +35,9 @@ class VideoWriter {
   static Result<VideoWriter> open(const std::filesystem::path& path, int width, int height,
                                   double fps);
 
+  /// Takes over `other`'s ffmpeg process and temporary file; `other` is left owning nothing.
   VideoWriter(VideoWriter&& other) noexcept;
+  /// Not assignable: a writer stays bound to the video it opened.
   VideoWriter& operator=(VideoWriter&&) = delete;
   /// Abandons an unfinished video: stops ffmpeg and removes the temporary file.
   ~VideoWriter();
@@ -43,6 +47,7 @@ class VideoWriter {
   /// Waits for ffmpeg, checks the file is complete and renames it into place. Errors quote
   /// ffmpeg's log (e.g. "No space left on device") or say what the file lacks.
   Result<void> finish();
+  /// Frames sent so far by add_frame().
   int frames() const { return frames_; }
 
  private:

@@ -14,7 +14,9 @@
 
 namespace animkit {
 
+/// A length unit a skeleton's file may be in: its name and its size in metres.
 struct LengthUnit {
+  /// Plural name, as messages print it ("centimetres").
   std::string_view name;
   double metres = 1.0;  ///< metres per unit
 };
@@ -32,8 +34,9 @@ inline constexpr std::array<LengthUnit, 5> kBvhLengthUnits = {
 inline constexpr double kTypicalLegMetres = 0.8;
 inline constexpr double kMinLegMetres = 0.4, kMaxLegMetres = 1.3;
 
+/// What detect_body_scale() found: the skeleton's unit and its rest leg length in that unit.
 struct BodyScale {
-  LengthUnit unit;
+  LengthUnit unit;  ///< the entry of kBvhLengthUnits that puts the legs nearest kTypicalLegMetres
   double leg_units =
       0.0;  ///< hip to knee to ankle at rest, the longer leg, in the skeleton's units
 };

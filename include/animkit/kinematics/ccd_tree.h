@@ -29,8 +29,9 @@ struct CcdTreeSettings {
 /// first solve), after which solves on that skeleton allocate nothing. Its contents between
 /// solves mean nothing; a reused workspace gives the same bits as a fresh one.
 struct CcdTreeWorkspace {
-  TreeIkScratch scratch;
+  TreeIkScratch scratch;  ///< per-joint effector bookkeeping and the best pose seen (tree_ik.h)
 
+  /// Sizes the scratch for `skeleton`'s joints; allocates only when the joint count changes.
   void resize(const Skeleton& skeleton);
 };
 

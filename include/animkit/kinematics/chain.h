@@ -43,7 +43,9 @@ class Chain {
   double reach() const { return reach_; }
   /// The nearest it gets: max(0, 2 * longest bone - reach).
   double min_reach() const { return min_reach_; }
+  /// Number of joints, root and end effector included; >= 2.
   int joint_count() const { return static_cast<int>(local_offsets_.size()); }
+  /// The root's world position (scene units): local_offsets()[0].
   const Vec3& root_position() const { return local_offsets_[0]; }
 
  private:
@@ -64,6 +66,7 @@ struct Pose {
   std::vector<Quat> global_rotations;  ///< world rotation of joint i, from forward kinematics
   std::vector<Vec3> global_positions;  ///< world position of joint i, from forward kinematics
 
+  /// World position of the last joint, the end effector; global_positions must not be empty.
   const Vec3& end_effector() const { return global_positions.back(); }
 };
 

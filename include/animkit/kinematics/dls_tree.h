@@ -30,6 +30,7 @@ enum class DlsMethod {
 
 /// Settings of solve_dls_tree(); the defaults suit skeletons in metres (a human ~1.7 m tall).
 struct DlsSettings {
+  /// The step rule: DLS (the default) or SDLS.
   DlsMethod method = DlsMethod::damped;
   int max_iterations = 100;  ///< DLS steps at most, >= 1
   double tolerance = 1e-4;   ///< largest effector position error to stop at (scene units), > 0

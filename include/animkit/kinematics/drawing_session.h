@@ -8,6 +8,7 @@
 
 namespace animkit {
 
+/// How run_drawing() draws: the solver and its options, the laps, and warm or cold starts.
 struct DrawingOptions {
   IkSolverKind solver = IkSolverKind::ccd;  ///< the lab's first solver
   IkOptions ik;                             ///< lab defaults: 100 iterations, eps 1e-4
@@ -16,16 +17,17 @@ struct DrawingOptions {
   /// to rest when a lap starts. false: every frame starts from the rest pose (cold start).
   bool warm_start = true;
 
+  /// The first problem (laps < 1, then ik.validate()'s), or nothing.
   std::optional<Error> validate() const;
 };
 
 /// One frame: one target, one solve.
 struct DrawingFrame {
-  int lap = 0;
-  Vec3 target = Vec3::Zero();
+  int lap = 0;                       ///< lap the frame belongs to, from 0
+  Vec3 target = Vec3::Zero();        ///< the frame's target (world, scene units)
   bool pen_down = true;              ///< false while travelling between strokes
   Vec3 end_effector = Vec3::Zero();  ///< after the solve (world)
-  IkResult ik;
+  IkResult ik;                       ///< what the solve reported (iterations, error, ...)
   /// Largest change of any joint's local rotation since the previous frame of the same lap
   /// (radians; 0 on a lap's first frame): the frame-to-frame jitter of the lab's question 3.
   double joint_step_rad = 0.0;
@@ -33,9 +35,10 @@ struct DrawingFrame {
   std::vector<Vec3> joint_positions;  ///< pose after the solve, for drawing the arm (world)
 };
 
+/// Everything a session recorded: its frames and the pose it ended in.
 struct DrawingRun {
   std::vector<DrawingFrame> frames;  ///< laps * targets frames, in order
-  Pose final_pose;
+  Pose final_pose;                   ///< the pose after the last frame's solve
 };
 
 /// Most frames a session runs (laps x targets): each frame keeps its pose for drawing.
@@ -63,16 +66,19 @@ struct DrawingSummary {
   int targets = 0;                  ///< frames solved
   double converged_fraction = 0.0;  ///< frames with error <= tolerance, in [0, 1]
   int unreachable_targets = 0;      ///< frames whose target no pose reaches
-  double iterations_mean = 0.0;
-  double iterations_median = 0.0;
-  int iterations_max = 0;
-  double error_mean = 0.0;
-  double error_max = 0.0;
-  double max_joint_step_rad = 0.0;
+  double iterations_mean = 0.0;     ///< mean iterations per frame
+  double iterations_median = 0.0;   ///< median iterations per frame
+  int iterations_max = 0;           ///< most iterations of any frame
+  double error_mean = 0.0;          ///< mean IkResult::error, |end effector - target| (scene units)
+  double error_max = 0.0;           ///< largest IkResult::error (scene units)
+  double max_joint_step_rad = 0.0;  ///< largest DrawingFrame::joint_step_rad (radians)
+  /// Median wall-clock time of a frame's solve (microseconds).
   double solve_time_us_median = 0.0;
+  /// Mean wall-clock time of a frame's solve (microseconds).
   double solve_time_us_mean = 0.0;
 };
 
+/// The summary of `run`'s frames; every field 0 for a run without frames.
 DrawingSummary summarize(const DrawingRun& run);
 
 }  // namespace animkit

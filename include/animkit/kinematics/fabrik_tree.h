@@ -47,11 +47,13 @@ struct FabrikTreeSettings {
 /// Its contents between solves mean nothing; a reused workspace gives the same bits as a fresh
 /// one.
 struct FabrikTreeWorkspace {
-  TreeIkScratch scratch;
+  TreeIkScratch scratch;               ///< per-joint effector bookkeeping, best pose (tree_ik.h)
   std::vector<Vec3> desired;           ///< backward pass: where each joint is asked to go
   std::vector<double> desired_weight;  ///< the weights summed into `desired`
   DlsWorkspace dls;                    ///< the DLS finish's (FabrikTreeSettings::finish_with_dls)
 
+  /// Sizes scratch, desired and desired_weight for `skeleton`'s joints (not `dls`, which
+  /// solve_fabrik_tree() sizes when finish_with_dls is set); allocates only when the size changes.
   void resize(const Skeleton& skeleton);
 };
 

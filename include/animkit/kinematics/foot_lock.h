@@ -19,7 +19,10 @@ namespace animkit {
 
 /// The joints of one leg: hip -> knee -> ankle, each the parent of the next.
 struct LegJoints {
-  int hip = -1, knee = -1, ankle = -1;
+  /// Skeleton index of the hip joint (-1 until set).
+  int hip = -1, knee = -1, ankle = -1;  ///< skeleton index of the ankle, a child of the knee
+  /// \var knee
+  /// Skeleton index of the knee joint, a child of the hip.
 };
 
 /// legs[0] the left leg, legs[1] the right one (the pelvis' forward axis comes from their hips).
@@ -42,6 +45,8 @@ enum class KneePole : std::uint8_t {
 std::string_view to_string(KneePole pole);
 std::optional<KneePole> parse_knee_pole(std::string_view text);
 
+/// Settings of foot locking (lock_feet(), detect_foot_contacts()): contact detection, blending,
+/// and the legs' two-bone IK. Lengths in metres, as the clip's positions.
 struct FootLockSettings {
   /// A foot can be planted when its ankle is at most this high above the lowest ankle height of
   /// the clip (either foot). Metres, > 0; default 0.05.
@@ -65,8 +70,8 @@ struct FootLockSettings {
   /// above 0 bends knees the clip holds straighter than that as soon as a blend starts (a
   /// small pop at the blend's first frame): the clip breaks the limit, the lock enforces it.
   double min_knee_flexion = 0.0;
-  double max_knee_flexion = 2.6179938779914944;
-  KneePole knee_pole = KneePole::pelvis_forward;
+  double max_knee_flexion = 2.6179938779914944;   ///< see min_knee_flexion; radians (150 deg)
+  KneePole knee_pole = KneePole::pelvis_forward;  ///< where solved knees point; see KneePole
   /// Soft reach ("soft IK"): within this distance of the straight leg's reach, the ankle's
   /// distance from the hip approaches the full reach exponentially instead of stopping at it.
   /// Without it a target crossing the reach makes the knee snap (flexion grows like the square
@@ -80,7 +85,8 @@ struct FootLockSettings {
 
 /// A contact: frames first..last (inclusive) in which one foot is planted.
 struct FootContactSpan {
-  int first = 0, last = 0;
+  /// The span's first frame, >= 0.
+  int first = 0, last = 0;  ///< the span's last frame (inclusive), >= first
   /// Where the ankle is pinned: its mean position over the span (world, metres).
   Vec3 lock = Vec3::Zero();
 };
@@ -94,7 +100,7 @@ struct FootContacts {
   /// weight is 0): the span's lock, or, in a gap where the ramps of two spans meet, a smoothstep
   /// mix of both locks from one to the other, so the target never jumps.
   std::vector<double> weight;
-  std::vector<Vec3> lock;
+  std::vector<Vec3> lock;  ///< per frame: the point the ankle is pulled toward (see `weight`)
 };
 
 /// Contacts of one foot from its ankle's world positions (one per frame, metres): planted where
@@ -111,39 +117,46 @@ double smoothstep(double t);
 /// [0, pi], negative when the knee lies behind the hip-ankle line relative to `forward`.
 double knee_flexion(const Vec3& hip, const Vec3& knee, const Vec3& ankle, const Vec3& forward);
 
+/// What lock_feet() measured: the contacts, the planted ankles' sliding before and after the
+/// lock, the IK's misses, frame-to-frame steps and the run time.
 struct FootLockMetrics {
   std::array<int, 2> contacts = {0, 0};        ///< spans per foot
   std::array<int, 2> planted_frames = {0, 0};  ///< frames inside spans, per foot
   /// Horizontal (XZ) motion of a planted ankle between consecutive frames of one span, cm per
   /// frame, over both feet: before and after locking.
-  double slide_before_mean_cm = 0.0, slide_before_max_cm = 0.0;
-  double slide_after_mean_cm = 0.0, slide_after_max_cm = 0.0;
+  double slide_before_mean_cm = 0.0, slide_before_max_cm = 0.0;  ///< largest slide before locking
+  /// Mean slide of a planted ankle after locking, cm per frame (as slide_before_mean_cm).
+  double slide_after_mean_cm = 0.0, slide_after_max_cm = 0.0;  ///< largest slide after locking
   /// |ankle - its target| over frames with a weight > 0, cm (reach or the knee range).
-  double ik_error_mean_cm = 0.0, ik_error_max_cm = 0.0;
-  /// Largest move of any joint between consecutive frames, cm.
-  double max_joint_step_before_cm = 0.0, max_joint_step_after_cm = 0.0;
+  double ik_error_mean_cm = 0.0, ik_error_max_cm = 0.0;  ///< largest |ankle - its target|, cm
+  /// Largest move of any joint between consecutive frames, cm, before locking (and after).
+  double max_joint_step_before_cm = 0.0, max_joint_step_after_cm = 0.0;  ///< same, after locking
   /// The same over the joints the lock can move (knees, ankles and below).
-  double max_leg_step_before_cm = 0.0, max_leg_step_after_cm = 0.0;
+  double max_leg_step_before_cm = 0.0, max_leg_step_after_cm = 0.0;  ///< same, after locking
   /// Largest change between consecutive frames of any joint's correction (its position after
   /// minus before), cm: a pop into or out of a contact shows here, a smooth blend keeps it low.
   double max_correction_step_cm = 0.0;
   double ms_per_frame = 0.0;  ///< wall time of the lock (detection, solves, metrics) per frame
 };
 
+/// What lock_feet() found: each foot's contacts, the metrics, and the ankles' trails.
 struct FootLockResult {
-  std::array<FootContacts, 2> contacts;
-  FootLockMetrics metrics;
+  std::array<FootContacts, 2> contacts;  ///< per leg, in BipedLegs order (0 left, 1 right)
+  FootLockMetrics metrics;               ///< measurements of the input and the locked output
   /// ankles_before[f * 2 + leg] and ankles_after: ankle world positions per frame (metres).
-  std::vector<Vec3> ankles_before, ankles_after;
+  std::vector<Vec3> ankles_before, ankles_after;  ///< after locking, laid out as ankles_before
 };
 
 /// Caller-owned scratch of lock_feet: sized on the first call for a skeleton and clip length,
 /// reused after, so the per-frame loop allocates nothing.
 struct FootLockWorkspace {
+  /// The frame being locked (its locals read from the clip, FK run).
   SkeletonPose pose;
+  /// Per joint: world position in the previous frame.
   std::vector<Vec3> previous_positions;
   std::vector<std::uint8_t> in_leg;  ///< per joint: 1 for a knee, an ankle or below them
-  std::vector<Vec3> original_positions, corrections;  ///< per joint, this frame / the last
+  /// Per joint: world position in this frame before the lock.
+  std::vector<Vec3> original_positions, corrections;  ///< per joint: last frame's after - before
 };
 
 /// Locks the feet of `input` (a motion of `skeleton`) into `output` (resized to match; frames

@@ -17,6 +17,7 @@
 
 namespace animkit {
 
+/// Settings of reach_hand(): the tree solver, its iteration cap and tolerance, the feet's weight.
 struct HandReachSettings {
   /// DLS by default: it moves every joint on the way a little, which is how a body reaches.
   TreeIkSolverKind solver = TreeIkSolverKind::dls;
@@ -29,6 +30,7 @@ struct HandReachSettings {
   std::optional<Error> validate() const;
 };
 
+/// What reach_hand() did: the solve, and how far hand, feet and root ended from where wanted.
 struct HandReachResult {
   TreeIkResult ik;          ///< the solve (error: the largest over hand and feet)
   double hand_error = 0.0;  ///< |hand - target| after the solve (scene units)

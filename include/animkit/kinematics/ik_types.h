@@ -29,6 +29,7 @@ struct IkOptions {
   double tolerance = 1e-4;   ///< converged when |end effector - target| <= tolerance; > 0
   FabrikRotations fabrik_rotations = FabrikRotations::from_rest;  ///< FABRIK only; CCD ignores it
 
+  /// The first problem (max_iterations < 1, a non-positive or non-finite tolerance), or nothing.
   std::optional<Error> validate() const;
 };
 

@@ -49,6 +49,10 @@ struct BallLimit {
   /// [0, pi]. Unset (the default): a circular cone.
   std::optional<double> swing_angle_2 = std::nullopt;
 
+  /// The first problem ("ball twist axis is not unit length (norm 2)"): a non-finite or non-unit
+  /// axis, a cone angle outside [0, pi], a swing axis not perpendicular to the twist axis (checked
+  /// only for an elliptical cone), a twist range that is non-finite, outside [-pi, pi] or with
+  /// min_twist > max_twist; or nothing.
   std::optional<Error> validate() const;
 };
 
@@ -60,8 +64,8 @@ std::optional<Error> validate(const JointLimit& limit);
 /// q = swing * twist: `twist` a rotation about `axis`, `swing` about an axis perpendicular to
 /// it. Both unit, both with w >= 0 (so swing's angle is in [0, pi], twist's in [-pi, pi]).
 struct SwingTwist {
-  Quat swing;
-  Quat twist;
+  Quat swing;  ///< about an axis perpendicular to `axis`; unit, w >= 0, angle in [0, pi]
+  Quat twist;  ///< about `axis`; unit, w >= 0, angle in [-pi, pi]
 };
 
 /// Swing-twist decomposition of the unit `q` about the unit `axis`. q and -q give the same

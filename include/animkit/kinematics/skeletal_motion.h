@@ -9,8 +9,9 @@
 
 namespace animkit {
 
+/// A motion clip of one skeleton: every frame's local rotations and translations, frame-major.
 struct SkeletalMotion {
-  int joint_count = 0;
+  int joint_count = 0;  ///< joints per frame, the skeleton's joint_count(); >= 0
   /// Seconds per frame, > 0.
   double frame_time = 1.0 / 30.0;
   /// local_rotations[f * joint_count + j]: joint j's rotation relative to its parent in frame
@@ -19,6 +20,7 @@ struct SkeletalMotion {
   /// local_translations[f * joint_count + j]: as SkeletonPose::local_translations (scene units).
   std::vector<Vec3> local_translations;
 
+  /// Number of frames: local_rotations.size() / joint_count (0 when joint_count is 0).
   int frame_count() const {
     return joint_count > 0 ? static_cast<int>(local_rotations.size()) / joint_count : 0;
   }

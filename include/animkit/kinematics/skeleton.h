@@ -29,6 +29,7 @@ struct SkeletonDesc {
   /// Empty (the default) means identity for every joint.
   std::vector<Quat> rest_rotations;
 
+  /// Number of joints: names.size(), which validate() requires the other vectors to match.
   int joint_count() const { return static_cast<int>(names.size()); }
 
   /// Appends a joint (identity rest rotation if rest_rotations is empty) and returns its index.
@@ -45,6 +46,7 @@ SkeletonDesc skeleton_desc_from_chain(const ChainDesc& chain);
 /// Immutable runtime model of a validated skeleton; only build_skeleton() makes one.
 class Skeleton {
  public:
+  /// Number of joints, >= 1.
   int joint_count() const { return static_cast<int>(parents_.size()); }
   const std::vector<std::string>& names() const { return names_; }         ///< as in SkeletonDesc
   const std::vector<int>& parents() const { return parents_; }             ///< -1 for roots
@@ -55,7 +57,9 @@ class Skeleton {
   /// The children of joint i, in index order: child_list()[child_begin()[i] ..
   /// child_begin()[i + 1]) (compressed rows, so no per-joint allocation).
   const std::vector<int>& child_begin() const { return child_begin_; }
+  /// Every joint's children, grouped by parent in joint order (indexed through child_begin()).
   const std::vector<int>& child_list() const { return child_list_; }
+  /// Number of children of `joint` (in [0, joint_count())); 0 for a leaf.
   int child_count(int joint) const { return child_begin_[joint + 1] - child_begin_[joint]; }
   /// Joints with no children (end effectors), in index order.
   const std::vector<int>& leaves() const { return leaves_; }

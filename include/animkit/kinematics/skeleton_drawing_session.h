@@ -13,6 +13,7 @@
 
 namespace animkit {
 
+/// How run_skeleton_drawing() draws: the tree solver and its stopping rule, laps, warm starts.
 struct SkeletonDrawingOptions {
   TreeIkSolverKind solver = TreeIkSolverKind::ccd;  ///< the lab's first solver
   int max_iterations = 100;                         ///< per target, >= 1 (the lab's)

@@ -71,8 +71,8 @@ std::optional<Error> validate_tree_ik(const Skeleton& skeleton, const TreeIkProb
 /// The position and orientation errors of `pose` (FK run) against the effectors:
 /// TreeIkResult::error and orientation_error.
 struct TreeIkErrors {
-  double position = 0.0;
-  double orientation = 0.0;
+  double position = 0.0;     ///< largest |effector joint - target position| (scene units)
+  double orientation = 0.0;  ///< largest angle to a target orientation, radians in [0, pi]
 };
 TreeIkErrors tree_ik_errors(const SkeletonPose& pose, std::span<const Effector> effectors);
 

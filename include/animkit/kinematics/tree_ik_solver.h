@@ -34,13 +34,13 @@ std::span<const TreeIkSolverKind> all_tree_ik_solvers();
 /// Settings and caller-owned workspaces of every tree solver (each sized on its first solve,
 /// after which solves on the same skeleton allocate nothing, as each solver promises).
 struct TreeIkSolvers {
-  FabrikTreeSettings fabrik;
-  CcdTreeSettings ccd;
+  FabrikTreeSettings fabrik;  ///< settings of solve_fabrik_tree() (TreeIkSolverKind::fabrik)
+  CcdTreeSettings ccd;        ///< settings of solve_ccd_tree() (TreeIkSolverKind::ccd)
   /// DLS and SDLS share these; `dls.method` is set from the kind on every solve.
   DlsSettings dls;
-  FabrikTreeWorkspace fabrik_workspace;
-  CcdTreeWorkspace ccd_workspace;
-  DlsWorkspace dls_workspace;
+  FabrikTreeWorkspace fabrik_workspace;  ///< scratch of solve_fabrik_tree()
+  CcdTreeWorkspace ccd_workspace;        ///< scratch of solve_ccd_tree()
+  DlsWorkspace dls_workspace;            ///< scratch of solve_dls_tree(), for DLS and SDLS alike
 
   /// Gives every solver the same iteration cap and position tolerance (scene units).
   void set_stopping(int max_iterations, double tolerance);

@@ -23,15 +23,19 @@ struct TwoBoneInput {
   std::optional<Error> validate() const;
 };
 
+/// Settings of solve_two_bone().
 struct TwoBoneSettings {
   /// Scene units. A target nearer the root than this has no direction, and a pole nearer the
   /// root-target line than this gives no bend side; the solver then keeps the limb's current
   /// direction / bend plane instead. Default 1e-9; must be positive.
   double degenerate_length = 1e-9;
 
+  /// The first problem (a degenerate_length that is not positive and finite), or nothing.
   std::optional<Error> validate() const;
 };
 
+/// The solved limb: the two rotations to apply, the new joint positions, and how near the end
+/// came to the target.
 struct TwoBoneResult {
   /// World-space rotation to apply to the upper bone about the root: the new root->middle
   /// vector is upper_rotation * (middle - root). Unit.

@@ -9,14 +9,20 @@
 
 namespace animkit {
 
+/// An OpenGL 3.3 core context with no window (or a hidden one), owned by this object: made
+/// current by create() and destroyed with it. Move-only.
 class OffscreenContext {
  public:
   /// Creates the context and makes it current on this thread. Errors say what each way of
   /// getting a context answered, e.g. "no OpenGL 3.3 context: EGL surfaceless: ...; ...".
   static Result<OffscreenContext> create();
 
+  /// Takes over the context; `other` is left invalid.
   OffscreenContext(OffscreenContext&&) noexcept;
+  /// Destroys this context (if any) and takes over `other`'s; `other` is left invalid.
   OffscreenContext& operator=(OffscreenContext&&) noexcept;
+  /// Destroys the context (releasing it first if it is current on this thread); the EGL
+  /// display and GLFW stay initialized, as other contexts of the process may use them.
   ~OffscreenContext();
 
   /// Makes the context current on this thread.

@@ -12,11 +12,15 @@
 
 namespace animkit {
 
+/// Renders DrawLists to Images of a fixed size, with its own offscreen OpenGL context, Renderer
+/// and OffscreenTarget (8 samples per pixel, or fewer if the driver offers fewer). Move-only.
 class PictureRenderer {
  public:
-  /// Errors: no OpenGL context (the message says what was tried), a bad size.
+  /// Makes a renderer for width x height pixel pictures (each side 1..8192). Errors: no OpenGL
+  /// context (the message says what was tried), a bad size.
   static Result<PictureRenderer> create(int width, int height);
 
+  /// Takes over the context, renderer and target; `other` is left empty.
   PictureRenderer(PictureRenderer&&) noexcept = default;
   /// Not assignable: the old renderer's OpenGL objects must go while its own context is
   /// current, which a member-wise assignment cannot arrange.
@@ -29,9 +33,13 @@ class PictureRenderer {
   Image render(const DrawList& list, const OrbitCamera& camera,
                Rgba background = palette::background);
 
+  /// Picture width in pixels.
   int width() const { return target_.width(); }
+  /// Picture height in pixels.
   int height() const { return target_.height(); }
+  /// Width over height, the aspect ratio passed to OrbitCamera::projection().
   double aspect() const { return static_cast<double>(width()) / height(); }
+  /// The offscreen context the pictures are drawn in (e.g. for its description()).
   const OffscreenContext& context() const { return context_; }
 
  private:

@@ -15,18 +15,25 @@ namespace animkit {
 /// The rectangle of the framebuffer to draw into, in pixels from its bottom-left corner (as
 /// OpenGL counts them).
 struct Viewport {
-  int width = 0, height = 0;
-  int x = 0, y = 0;
+  /// Width of the rectangle in pixels.
+  int width = 0, height = 0;  ///< Height of the rectangle in pixels.
+  /// Left edge of the rectangle, in pixels from the framebuffer's left edge.
+  int x = 0, y = 0;  ///< Bottom edge of the rectangle, in pixels from the framebuffer's bottom.
 };
 
+/// Draws DrawLists with OpenGL 3.3 core into the bound framebuffer. Owns its shader programs,
+/// vertex arrays and buffers, which belong to the context current at create(). Move-only.
 class Renderer {
  public:
   /// Compiles the shaders and makes the buffers. Errors: a shader that does not compile or
   /// link (with the driver's log), no current context.
   static Result<Renderer> create();
 
+  /// Takes over the programs and buffers; `other` is left empty.
   Renderer(Renderer&&) noexcept;
+  /// Deletes this renderer's OpenGL objects (if any) and takes over `other`'s.
   Renderer& operator=(Renderer&&) noexcept;
+  /// Deletes the programs and buffers; the context they were made in must be current.
   ~Renderer();
 
   /// Clears the viewport's rectangle of the bound framebuffer to `background` (colour, depth).

@@ -20,6 +20,7 @@
 
 namespace animkit {
 
+/// How a BvhScene solves, makes its foot-locked clip and what it draws.
 struct BvhSceneOptions {
   /// CCD by default: on a captured body reaching with a hand it turns the arm and leaves the
   /// spine nearly as captured, where DLS bends every spine joint (its least-norm step favours
@@ -36,14 +37,18 @@ struct BvhSceneOptions {
 
 /// A joint held at a world position (scene units) by IK.
 struct HeldTarget {
+  /// Index of the held joint in the skeleton; never a root.
   int joint = -1;
+  /// Where IK holds it, world space.
   Vec3 position = Vec3::Zero();
 };
 
 /// What the last solve did (for the viewer's readouts).
 struct BvhSolveReadout {
+  /// What the tree IK solver reported: iterations, error, convergence, reachability.
   TreeIkResult result;
   int effectors = 0;  ///< held targets plus pinned feet
+  /// Wall-clock time of the solve, microseconds.
   double solve_time_us = 0.0;
 };
 
@@ -51,8 +56,12 @@ struct BvhSolveReadout {
 /// foot locking (narrow, dark, with a dot where each contact pins the ankle). Where locking
 /// changed nothing the orange shows as a border of the dark line.
 inline constexpr Rgba kTrailBefore{1.00f, 0.50f, 0.05f, 1.0f};
+/// The foot-locked clip's trail and its contact dots (see above).
 inline constexpr Rgba kTrailAfter{0.08f, 0.12f, 0.40f, 1.0f};
 
+/// The interactive motion-capture scene (see the top of this header): a clip on a
+/// PlaybackClock, joints held by tree IK, the foot-locked clip and the ankles' trails. Made by
+/// create(); move-only.
 class BvhScene {
  public:
   /// `motion` a clip of `skeleton` in metres, Y up; `limits` one per joint (an empty vector:
@@ -64,7 +73,9 @@ class BvhScene {
   static Result<BvhScene> create(Skeleton skeleton, SkeletalMotion motion,
                                  std::vector<JointLimit> limits,
                                  const BvhSceneOptions& options = {});
+  /// Takes over another scene; the moved-from one may only be destroyed or assigned to.
   BvhScene(BvhScene&&) noexcept;
+  /// Replaces this scene with another; the moved-from one may only be destroyed or assigned to.
   BvhScene& operator=(BvhScene&&) noexcept;
   ~BvhScene();
 
@@ -72,7 +83,10 @@ class BvhScene {
   void advance(double seconds);
   /// Shows frame `frame` (clamped) and poses it.
   void seek(int frame);
+  /// The clock, to play, pause or change speed; move it with advance() and seek(), which also
+  /// pose the frame.
   PlaybackClock& clock() { return clock_; }
+  /// The clock: the frame shown, the time and the clip's duration.
   const PlaybackClock& clock() const { return clock_; }
 
   /// Holds `joint` at `target` (a new target, or moves the joint's one) and re-solves.
@@ -84,25 +98,34 @@ class BvhScene {
   Result<void> drag_joint(int joint, const Ray& ray, const Vec3& eye, const Vec3& anchor);
   /// Lets one joint (or every joint) go back to the clip.
   void let_go(int joint);
+  /// Lets every held joint go back to the clip.
   void let_go_all();
+  /// The held targets, in the order their joints were first held.
   std::span<const HeldTarget> held() const { return held_; }
 
   /// Shows the foot-locked clip (true) or the captured one. Errors: no foot-locked clip (the
   /// message of foot_lock_problem()).
   Result<void> set_foot_locked(bool locked);
+  /// Whether the foot-locked clip is the one shown.
   bool foot_locked() const { return foot_locked_; }
   /// The foot lock's contacts, trails and metrics, or null when it could not be made.
   const FootLockResult* foot_lock() const { return lock_ ? &*lock_ : nullptr; }
   /// Why there is no foot-locked clip ("no joint named LeftHip"), empty when there is one.
   const std::string& foot_lock_problem() const { return lock_problem_; }
 
+  /// Switches the tree IK solver and re-solves the held targets.
   void set_solver(TreeIkSolverKind solver);
+  /// Turns BvhSceneOptions::pin_feet on or off and re-solves.
   void set_pin_feet(bool pin);
+  /// Turns drawing the ankles' trails on or off.
   void set_trails(bool trails) { options_.trails = trails; }
+  /// The options as given to create() and changed by the three setters above; `foot_locked`
+  /// keeps its value from create() (foot_locked() says which clip is shown).
   const BvhSceneOptions& options() const { return options_; }
 
   /// The joint whose limit is drawn (-1: none).
   void select(int joint) { selected_ = joint >= 0 && joint < skeleton_.joint_count() ? joint : -1; }
+  /// The joint whose limit is drawn, or -1 for none.
   int selected() const { return selected_; }
 
   /// The joint drawn nearest to pixel (x, y) of a width x height view (y down) within
@@ -111,7 +134,9 @@ class BvhScene {
   int pick_joint(const OrbitCamera& camera, double x, double y, double width, double height,
                  double radius_px) const;
 
+  /// The skeleton the clip animates.
   const Skeleton& skeleton() const { return skeleton_; }
+  /// One limit per joint, as IK applies them (given to create(), or made there).
   std::span<const JointLimit> limits() const { return limits_; }
   /// The shown motion (captured or foot-locked).
   const SkeletalMotion& motion() const;
@@ -119,6 +144,7 @@ class BvhScene {
   const SkeletonPose& pose() const { return pose_; }
   /// The clip's pose of the frame on screen, before IK.
   const SkeletonPose& clip_pose() const { return clip_pose_; }
+  /// What the last solve did; empty while no target is held (or when a solve failed).
   const std::optional<BvhSolveReadout>& last_solve() const { return last_; }
   /// The ankles' path over the clip (leg 0 left, 1 right): captured (`locked` false) or
   /// foot-locked. Empty without a foot lock.

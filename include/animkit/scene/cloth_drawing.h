@@ -39,10 +39,12 @@ double cloth_floor_height(const GridClothOptions& grid);
 /// shape's largest side, so a sheet hanging from its pins stays in the picture. For a grid's
 /// description these give the grid overloads' box and floor.
 Eigen::AlignedBox3d cloth_focus_bounds(const ClothDesc& desc, const ClothState& state);
+/// The floor's height (world y, m) for `desc`: a tenth of the shape's largest side below the
+/// lowest point that box reaches.
 double cloth_floor_height(const ClothDesc& desc);
 
 /// The direction pictures of the cloth are taken from: facing the hanging sheet's front
 /// (orange) side, a little from above.
-inline constexpr double kClothPictureYaw = -1.05, kClothPicturePitch = 0.3;
+inline constexpr double kClothPictureYaw = -1.05, kClothPicturePitch = 0.3;  ///< pitch, radians
 
 }  // namespace animkit

@@ -19,6 +19,8 @@
 
 namespace animkit {
 
+/// The lab's cloth as its parameter panel sees it: a grid sheet, the solver settings and the
+/// time step.
 struct ClothSceneOptions {
   GridClothOptions grid;         ///< the lab's cloth by default
   SimulationOptions simulation;  ///< implicit Euler with PCG by default
@@ -29,6 +31,8 @@ struct ClothSceneOptions {
   /// The world these options describe: the lab's (no colliders, no air) with this grid.
   ClothWorldDesc world() const;
 
+  /// An Error naming the first invalid field (grid, simulation, or a time step outside
+  /// kTimeStepRange), or none.
   std::optional<Error> validate() const;
 };
 
@@ -36,6 +40,7 @@ struct ClothSceneOptions {
 /// m (k (target - x) - c v), k = min(200 s^-2, 1 / (4 h^2)) for the time step h (stable at any
 /// step), c = 2 sqrt(k) (critically damped on its own).
 struct ClothDrag {
+  /// Index of the dragged particle, in [0, particle count).
   int particle = 0;
   Vec3 target = Vec3::Zero();  ///< world space
 };
@@ -47,6 +52,8 @@ struct ClothPick {
   std::optional<ColliderGrab> collider;  ///< the collider's surface, when it is in front
 };
 
+/// The interactive cloth scene (see the top of this header): one cloth world stepped a frame
+/// at a time, with the mouse spring, pin toggling and collider drags. Made by create().
 class ClothScene {
  public:
   /// Builds the lab's cloth (or the given one). Errors name the first bad option.
@@ -85,7 +92,9 @@ class ClothScene {
                         double radius_px) const;
   /// Starts or moves the mouse spring. Errors: index out of range, non-finite target.
   Result<void> set_drag(const ClothDrag& drag);
+  /// Stops the mouse spring and removes its force from the simulator.
   void clear_drag();
+  /// The mouse spring, while a particle is dragged.
   const std::optional<ClothDrag>& drag() const { return drag_; }
 
   /// Gives collider `index` a new pose (world space) to reach by the next step. It goes
@@ -97,7 +106,10 @@ class ClothScene {
   /// the plane through the grab facing the camera) asks for the pose that keeps the grabbed
   /// point under it (dragged_pose), through move_collider; end releases it.
   void grab_collider(const ColliderGrab& grab);
+  /// Asks for the grabbed collider's pose that puts the grabbed point at `cursor` (world space,
+  /// m). Errors: no collider grabbed, a non-finite cursor, or move_collider()'s.
   Result<void> drag_collider_to(const Vec3& cursor);
+  /// Ends the collider drag; no further poses are asked for.
   void release_collider() { collider_drag_.reset(); }
   /// The grab and the pose last asked for, while a collider is dragged.
   struct ColliderDrag {
@@ -105,8 +117,10 @@ class ClothScene {
     Vec3 cursor = Vec3::Zero();  ///< world space, m: where the grabbed point is asked to go
     RigidPose target;            ///< the pose asked for last (dragged_pose(grab, cursor))
   };
+  /// The collider drag in progress, or empty.
   const std::optional<ColliderDrag>& collider_drag() const { return collider_drag_; }
 
+  /// The simulator: the cloth's model and current state.
   const ClothSimulator& simulator() const { return built_.simulator; }
   /// The world's colliders as they stand, in the description's order.
   const std::vector<Collider>& colliders() const { return built_.colliders; }
@@ -118,14 +132,19 @@ class ClothScene {
   /// The world as described (with any live changes), its name, and the lab's view of it
   /// (the grid's options when the sheet is a grid, the solver and time step).
   const ClothWorldDesc& world() const { return world_; }
+  /// The world's name as given to create() or load() ("lab" for the lab's cloth).
   const std::string& name() const { return name_; }
+  /// The lab's view of the world: its grid options (the defaults when the sheet is not a
+  /// grid), the solver settings and the time step.
   const ClothSceneOptions& options() const { return options_; }
   /// Whether the lab's parameter sliders (mass, stiffness, damping, gravity, grid size) apply:
   /// a grid sheet with per-particle parameters (no physical material).
   bool lab_parameters() const;
+  /// The report of the last step that succeeded since the world (re)started; empty before.
   const std::optional<StepReport>& last_step() const { return last_; }
   /// Total energy after each of the last (up to) kEnergyHistory steps, oldest first.
   const std::deque<double>& energy_history() const { return energy_; }
+  /// How many steps energy_history() keeps.
   static constexpr std::size_t kEnergyHistory = 600;
 
   /// Describes the cloth (style.floor_height is set: the ground's height, or below where the

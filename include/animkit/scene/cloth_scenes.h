@@ -11,6 +11,7 @@
 
 namespace animkit {
 
+/// One built-in cloth scene: its name, a one-line summary and the function that makes its world.
 struct ClothSceneEntry {
   std::string_view name;     ///< what --scene and the menu take, e.g. "drape-sphere"
   std::string_view summary;  ///< one line for --help and menus
@@ -29,9 +30,12 @@ std::string cloth_scene_names();
 /// Where pictures of a world look: a box around the cloth as it starts and the colliders, and
 /// the floor drawn under it (the ground, or below where the sheet can hang).
 struct ClothPictureFrame {
+  /// The box a picture frames, world space, m.
   Eigen::AlignedBox3d focus;
+  /// Height (world y, m) of the floor grid drawn under the cloth.
   double floor_height = 0.0;
 };
+/// The frame of `world`, whose sheet `cloth` starts in `state` among `colliders` (as built).
 ClothPictureFrame cloth_picture_frame(const ClothWorldDesc& world, const ClothDesc& cloth,
                                       const ClothState& state,
                                       const std::vector<Collider>& colliders);

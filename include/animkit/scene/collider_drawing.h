@@ -11,6 +11,7 @@
 
 namespace animkit {
 
+/// How describe_colliders() draws colliders.
 struct ColliderStyle {
   Rgba color = palette::collider;  ///< both sides of every collider's triangles
   bool planes = true;              ///< draw planes as their display squares

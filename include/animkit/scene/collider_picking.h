@@ -9,6 +9,8 @@
 
 namespace animkit {
 
+/// A collider grabbed with the mouse (pick_collider): which one, where on its surface, and its
+/// pose at the press.
 struct ColliderGrab {
   int collider = 0;           ///< index in the colliders picked from, >= 0
   Vec3 point = Vec3::Zero();  ///< world space, m: where the ray met the collider's surface

@@ -12,15 +12,20 @@
 
 namespace animkit {
 
+/// How an IkScene solves: the chain solver and its options.
 struct IkSceneOptions {
+  /// The chain solver: CCD (the default) or FABRIK.
   IkSolverKind solver = IkSolverKind::ccd;
   IkOptions ik;  ///< lab defaults
 };
 
 /// What the last solve did (for the viewer's readouts).
 struct IkSolveReadout {
+  /// The target solved for, world space.
   Vec3 target = Vec3::Zero();
+  /// What the solver reported: iterations, error, convergence, reachability.
   IkResult result;
+  /// Wall-clock time of the solve, microseconds.
   double solve_time_us = 0.0;
 };
 
@@ -39,8 +44,11 @@ struct ArmDrawingView {
 void describe_arm_drawing(DrawList& out, const ArmDrawingView& view);
 
 /// The direction pictures of the arm are taken from: high enough to see the drawing plane.
-inline constexpr double kIkPictureYaw = 0.5, kIkPicturePitch = 0.9;
+inline constexpr double kIkPictureYaw = 0.5, kIkPicturePitch = 0.9;  ///< pitch, radians
 
+/// The interactive IK scene (see the top of this header): a chain solving for a trajectory's
+/// targets one advance() at a time and drawing the path, or following a dragged target. Made
+/// by create().
 class IkScene {
  public:
   /// Errors: an invalid chain, an empty target list or a non-finite target (naming its index),
@@ -58,19 +66,27 @@ class IkScene {
   Result<IkSolveReadout> follow(const Vec3& target);
   /// Replaces the trajectory and resets. Errors as in create().
   Result<void> set_trajectory(Trajectory trajectory);
+  /// Switches the solver for the solves that follow; the pose and the path are kept.
   void set_solver(IkSolverKind solver) { options_.solver = solver; }
 
+  /// The arm, built from the ChainDesc given to create().
   const Chain& chain() const { return chain_; }
+  /// The arm's current pose: after the last solve, or the rest pose.
   const Pose& pose() const { return pose_; }
+  /// The trajectory's targets (world space), in drawing order.
   const std::vector<Vec3>& targets() const { return trajectory_.targets; }
+  /// The trajectory being drawn: its targets and pen flags.
   const Trajectory& trajectory() const { return trajectory_; }
   /// The strokes drawn in this lap, one polyline per pen-down stretch.
   const std::vector<std::vector<Vec3>>& path() const { return path_; }
+  /// The options in use (set_solver() changes the solver).
   const IkSceneOptions& options() const { return options_; }
   /// Index of the target the next advance() solves for.
   int next_target() const { return next_; }
   /// True once every target of the current lap has been solved.
   bool lap_finished() const { return next_ == 0 && solved_in_lap_ > 0; }
+  /// The last solve, by advance() or follow(); empty after create(), reset() and
+  /// set_trajectory().
   const std::optional<IkSolveReadout>& last_solve() const { return last_; }
 
   /// Describes the scene: ground grid, targets (green), drawn path (red), the arm (bones as

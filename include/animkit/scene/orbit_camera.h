@@ -9,11 +9,15 @@
 
 namespace animkit {
 
+/// A half-line: the points origin + t direction for t >= 0, world space.
 struct Ray {
+  /// Where the ray starts, world space.
   Vec3 origin;
   Vec3 direction;  ///< unit
 };
 
+/// A camera orbiting a focus point: yaw and pitch give the direction it looks from, `distance`
+/// how far away the eye is.
 struct OrbitCamera {
   Vec3 focus = Vec3(0.0, 0.8, 0.0);  ///< world point the camera looks at
   double yaw = 0.6;                  ///< radians about +y; 0 looks from +z towards -z
@@ -21,7 +25,11 @@ struct OrbitCamera {
   double distance = 6.0;             ///< from the focus (scene units), > 0
   double fov_y = 0.7;                ///< vertical field of view (radians)
 
+  /// The eye's world position: `distance` from the focus along
+  /// (cos(pitch) sin(yaw), sin(pitch), cos(pitch) cos(yaw)).
   Vec3 eye() const;
+  /// The view matrix (world to view space) as gluLookAt makes it: from eye() towards the
+  /// focus, +y up.
   Eigen::Matrix4d view() const;
   /// Perspective projection for a viewport of the given aspect (width / height).
   Eigen::Matrix4d projection(double aspect) const;

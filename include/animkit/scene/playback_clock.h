@@ -4,6 +4,7 @@
 // is tested without a skeleton.
 namespace animkit {
 
+/// Play, pause, scrub and speed for a clip of equal-length frames, looping at its end.
 class PlaybackClock {
  public:
   /// A clip of `frame_count` frames (>= 1) of `frame_time` seconds (> 0) each, at frame 0,
@@ -22,9 +23,12 @@ class PlaybackClock {
   double time() const { return time_; }
   /// frame_count x frame_time, seconds.
   double duration() const { return frame_count_ * frame_time_; }
+  /// Frames in the clip, >= 1.
   int frame_count() const { return frame_count_; }
+  /// Seconds per frame, > 0.
   double frame_time() const { return frame_time_; }
 
+  /// Whether advance() moves the time on; false pauses.
   bool playing = true;
   /// Clip seconds per real second; 1 plays at the captured rate.
   double speed = 1.0;

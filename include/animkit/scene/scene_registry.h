@@ -16,8 +16,10 @@ enum class SceneKind : std::uint8_t {
   cloth,  ///< a cloth world (cloth_scene.h); the entry's name is its cloth_scenes() name
 };
 
+/// One scene the viewer opens: its name, its kind and a one-line summary.
 struct SceneEntry {
   std::string_view name;  ///< what --scene takes, e.g. "ik", "bvh", "drape-sphere"
+  /// What kind of scene it is, so which of the viewer's views opens it.
   SceneKind kind;
   std::string_view summary;  ///< one line for --help and menus
 };

@@ -11,10 +11,13 @@
 
 namespace animkit {
 
+/// Sizes and colours of describe_skeleton()'s bones and joints.
 struct SkeletonStyle {
   double bone_thickness = 0.03;  ///< box side, scene units
   double joint_radius = 0.025;   ///< sphere radius, scene units
+  /// Colour of the bone boxes.
   Rgba bone = palette::bone;
+  /// Colour of the joint spheres.
   Rgba joint = palette::joint;
 };
 

@@ -12,16 +12,22 @@ namespace animkit {
 
 /// A binary image: 1 = ink (foreground), 0 = paper. Pixels outside read as 0.
 struct BinaryImage {
-  int width = 0, height = 0;
+  /// Columns, >= 0.
+  int width = 0, height = 0;         ///< rows, >= 0
   std::vector<std::uint8_t> pixels;  ///< width * height, row-major, row 0 at the top
 
   BinaryImage() = default;
+  /// A w x h image (w, h >= 0) of paper only.
   BinaryImage(int w, int h) : width(w), height(h), pixels(static_cast<std::size_t>(w) * h, 0) {}
+  /// Whether (x, y), column x and row y counted from the top, is a pixel of the image.
   bool inside(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height; }
+  /// The pixel at column x, row y; 0 (paper) outside the image.
   std::uint8_t get(int x, int y) const {
     return inside(x, y) ? pixels[static_cast<std::size_t>(y) * width + x] : 0;
   }
+  /// Sets the pixel at column x, row y to v (0 or 1); (x, y) must be inside() (not checked).
   void set(int x, int y, std::uint8_t v) { pixels[static_cast<std::size_t>(y) * width + x] = v; }
+  /// Number of ink pixels (value 1).
   int count() const;
 };
 
@@ -41,8 +47,8 @@ BinaryImage binarize(const GrayImage& image, int threshold, InkPolarity polarity
 /// 8-connected components; returns the component label of every pixel (-1 for paper) and
 /// the size of each component.
 struct Components {
-  std::vector<int> label;
-  std::vector<int> sizes;
+  std::vector<int> label;  ///< per pixel, as BinaryImage::pixels: its component, -1 for paper
+  std::vector<int> sizes;  ///< pixels in each component, indexed by label
 };
 Components connected_components(const BinaryImage& image);
 

@@ -8,18 +8,22 @@
 
 namespace animkit {
 
+/// A one-pixel skeleton as a graph: ends, junctions and dots are nodes, pixel chains are edges.
 struct SkeletonGraph {
+  /// An end, a junction, the one node of a closed loop without junction, or a dot.
   struct Node {
     Point2 position;   ///< pixel coordinates (x right, y down), the centroid of its pixels
     int degree = 0;    ///< edge ends at this node
     bool dot = false;  ///< a lone skeleton pixel: drawn as a point
   };
+  /// A chain of skeleton pixels between two nodes.
   struct Edge {
-    int a = 0, b = 0;            ///< node indices (a == b for a loop)
+    /// Index in `nodes` of the node the edge starts at.
+    int a = 0, b = 0;            ///< index in `nodes` of the node it ends at (a == b for a loop)
     std::vector<Point2> pixels;  ///< from node a to node b, both node positions included
   };
-  std::vector<Node> nodes;
-  std::vector<Edge> edges;
+  std::vector<Node> nodes;  ///< every node; Edge::a and Edge::b index it
+  std::vector<Edge> edges;  ///< every edge, each between two nodes (or one, for a loop)
 };
 
 /// The graph of a skeleton (as thin() leaves it). Pixels are joined by m-adjacency: a diagonal

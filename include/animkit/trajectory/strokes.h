@@ -18,9 +18,10 @@ using Strokes = std::vector<Stroke>;
 /// How evenly a drawing is sampled: statistics of the distances between consecutive points
 /// of each stroke (pen-up gaps between strokes are not segments).
 struct SpacingStats {
-  int segments = 0;
+  int segments = 0;   ///< distances measured; when there are none, every field is 0
   double mean = 0.0;  ///< mean segment length (drawing units)
-  double min = 0.0, max = 0.0;
+  /// Shortest segment (drawing units).
+  double min = 0.0, max = 0.0;  ///< longest segment (drawing units)
   double cv = 0.0;  ///< coefficient of variation: standard deviation / mean
 };
 SpacingStats spacing_stats(const Strokes& strokes);
@@ -28,12 +29,15 @@ SpacingStats spacing_stats(const Strokes& strokes);
 /// Total length of a stroke.
 double stroke_length(const Stroke& stroke);
 
+/// Settings of resample().
 struct ResampleOptions {
   double spacing = 0.01;  ///< target distance between samples (drawing units), > 0
   /// A point where the direction turns by more than this (radians) is a corner and is kept
   /// as a sample, so squares stay square. In (0, pi]; default 30 degrees.
   double corner_angle = 0.5235987755982988;
 
+  /// The first problem (a spacing not positive and finite, a corner_angle outside (0, pi]), or
+  /// nothing.
   std::optional<Error> validate() const;
 };
 

@@ -12,7 +12,7 @@ namespace animkit {
 
 /// The arm's targets in drawing order (world space), one per frame, each with the pen state.
 struct Trajectory {
-  std::vector<Vec3> targets;
+  std::vector<Vec3> targets;   ///< world positions (scene units), one per frame
   std::vector<char> pen_down;  ///< per target: 1 draws, 0 travels between strokes
 
   /// A single pen-down stroke through `points` (the lab's shapes).
@@ -21,7 +21,8 @@ struct Trajectory {
 
 /// Where a drawing goes on the plane y = 0: a square centred at (center_x, 0, center_z).
 struct DrawingBox {
-  double center_x = 0.0, center_z = 0.0;
+  /// x of the square's centre (scene units, finite).
+  double center_x = 0.0, center_z = 0.0;  ///< z of the square's centre (scene units, finite)
   double half_extent = 0.6;  ///< the drawing's larger side spans 2 * half_extent; > 0
 };
 
@@ -37,10 +38,13 @@ Result<Strokes> fit_to_box(const Strokes& strokes, const DrawingBox& box,
 /// at `fill` (0..1] of the radius where the plane y = plane_y leaves the arm's reach.
 DrawingBox reachable_box(const Vec3& root, double reach, double plane_y = 0.0, double fill = 0.7);
 
+/// How to_trajectory() moves the pen between strokes.
 struct TravelOptions {
   double pen_lift = 0.05;  ///< height of pen-up travel above the plane (scene units), >= 0
   double spacing = 0.02;   ///< distance between travel targets (scene units), > 0
 
+  /// The first problem (a negative or non-finite pen_lift, a spacing not positive and
+  /// finite), or nothing.
   std::optional<Error> validate() const;
 };
 
