@@ -36,42 +36,44 @@ std::size_t utf8_sequence_length(std::string_view text, std::size_t i) {
   return length;
 }
 
-// Appends raw[0..] made printable, at most max_chars characters; true if all of it fit.
+// Appends raw[0..] made printable, at most max_chars characters as shown (an escape such as
+// \x7f counts its four, a UTF-8 character one), so escaping cannot make a message longer than
+// its budget; true if all of it fit.
 bool append_escaped(std::string& out, std::string_view raw, std::size_t max_chars) {
-  std::size_t chars = 0;
+  std::size_t shown = 0;
   for (std::size_t i = 0; i < raw.size();) {
-    if (chars >= max_chars) return false;
     const auto c = static_cast<std::uint8_t>(raw[i]);
+    std::string piece;  // what raw[i..] shows as
+    std::size_t consumed = 1;
     if (c >= 0x20 && c < 0x7F) {
-      out += static_cast<char>(c);
-      ++i;
+      piece = static_cast<char>(c);
     } else if (c == '\n') {
-      out += "\\n";
-      ++i;
+      piece = "\\n";
     } else if (c == '\r') {
-      out += "\\r";
-      ++i;
+      piece = "\\r";
     } else if (c == '\t') {
-      out += "\\t";
-      ++i;
+      piece = "\\t";
     } else if (const std::size_t n = c >= 0x80 ? utf8_sequence_length(raw, i) : 0; n > 0) {
+      consumed = n;
       // A well-formed sequence is kept, except the C1 controls U+0080..U+009F (a terminal
       // may read U+009B as an escape introducer).
       if (c == 0xC2 && static_cast<std::uint8_t>(raw[i + 1]) < 0xA0) {
         char escaped[16];
         std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<std::uint8_t>(raw[i + 1]));
-        out += escaped;
+        piece = escaped;
       } else {
-        out.append(raw.substr(i, n));
+        piece = raw.substr(i, n);
       }
-      i += n;
     } else {
       char escaped[8];
       std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
-      out += escaped;
-      ++i;
+      piece = escaped;
     }
-    ++chars;
+    const bool one_character = consumed > 1 && piece == raw.substr(i, consumed);
+    shown += one_character ? 1 : piece.size();
+    if (shown > max_chars) return false;
+    out += piece;
+    i += consumed;
   }
   return true;
 }

@@ -42,5 +42,16 @@ TEST(SanitizeMessage, KeepsTextEscapesControlsAndCuts) {
   EXPECT_EQ(sanitize_message("abcdef", 4), "abcd... (cut)");
 }
 
+// An escape counts as the characters it shows: a budget of N characters is never exceeded,
+// whatever the bytes (300 DEL bytes used to show as 1,200 characters).
+TEST(SanitizeMessage, EscapesCountAgainstTheBudget) {
+  const std::string dels(300, '\x7f');
+  EXPECT_EQ(sanitize_message(dels, 10), "\\x7f\\x7f... (cut)");
+  EXPECT_EQ(quote_input(dels, 12), "'\\x7f\\x7f\\x7f...' (300 bytes)");
+  // A UTF-8 character counts as one.
+  EXPECT_EQ(quote_input("\xc3\xa9\xc3\xa9\xc3\xa9", 3), "'\xc3\xa9\xc3\xa9\xc3\xa9'");
+  EXPECT_EQ(quote_input("\xc3\xa9\xc3\xa9\xc3\xa9", 2), "'\xc3\xa9\xc3\xa9...' (6 bytes)");
+}
+
 }  // namespace
 }  // namespace animkit

@@ -13,8 +13,9 @@ constexpr std::size_t kQuotedInputChars = 80;
 
 /// `raw` between single quotes, safe to print: printable ASCII and well-formed UTF-8 as they
 /// are; \n, \r, \t as those two-character escapes; other control bytes, DEL and bytes that are
-/// not well-formed UTF-8 as \xNN. Input longer than `max_chars` characters is cut there and
-/// ends in "...' (N bytes)". E.g. quote_input("a\x1b[2Jb") == "'a\\x1b[2Jb'".
+/// not well-formed UTF-8 as \xNN. Input that would show as more than `max_chars` characters
+/// (an escape counts as the characters it shows) is cut there and ends in "...' (N bytes)". E.g.
+/// quote_input("a\x1b[2Jb") == "'a\\x1b[2Jb'".
 std::string quote_input(std::string_view raw, std::size_t max_chars = kQuotedInputChars);
 
 /// `raw` made safe the same way, without quotes: for whole messages that may carry input
