@@ -111,8 +111,7 @@ fuzz: deps test-deps
 	bash scripts/run-fuzzers.sh $(SANITIZE_DIR) $(FUZZ_SECONDS)
 
 bench: build
-	$(RELEASE_DIR)/bench/ik_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-	$(RELEASE_DIR)/bench/cloth_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+	bash scripts/run-benchmarks.sh $(RELEASE_DIR)
 
 clean:
 	rm -rf build out

@@ -25,7 +25,7 @@ machine and at the commit its heading gives. Times are medians over the repetiti
 program repeated (its `repetitions` column). The machines are shared 2-core virtual machines:
 compare numbers within one table (measured in one run), and read [Measured results](results.md)
 for what they mean and the targets they are held to. Reproduce them with
-`scripts/run-benchmarks.sh` (after `make build`).
+`make bench`.
 """
 
 
@@ -66,20 +66,16 @@ STANDARD = {"name", "family_index", "per_family_instance_index", "run_name", "ru
 
 
 def rows_of(benchmarks):
-    """One entry per benchmark: its median when repeated, else its single run."""
+    """One entry per benchmark, in the program's order: its median when repeated, else its
+    single run."""
     chosen = {}
     for entry in benchmarks:
         run = entry.get("run_name", entry["name"])
-        if entry.get("run_type") == "aggregate":
-            if entry.get("aggregate_name") == "median":
-                chosen[run] = entry
-        elif run not in chosen or chosen[run].get("run_type") != "aggregate":
+        if entry.get("run_type") != "aggregate":
             chosen.setdefault(run, entry)
-    order = []
-    for entry in benchmarks:
-        run = entry.get("run_name", entry["name"])
-        if run not in order:
-            order.append(run)
+        elif entry.get("aggregate_name") == "median":
+            chosen[run] = entry
+    order = dict.fromkeys(entry.get("run_name", entry["name"]) for entry in benchmarks)
     return [chosen[run] for run in order if run in chosen]
 
 

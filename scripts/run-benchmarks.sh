@@ -3,7 +3,8 @@
 # and writes one JSON file per program into bench/results/ (Google Benchmark's own format, with
 # the commit added to its context), then regenerates the page from them:
 #
-#   make build && bash scripts/run-benchmarks.sh [BUILD_DIR]     (about 15 minutes on 2 cores)
+#   make bench    (or, after make build: bash scripts/run-benchmarks.sh [BUILD_DIR]; about 15
+#                 minutes on 2 cores)
 #
 # BUILD_DIR is the Release tree (build/release by default). Close other programs first: the
 # tables are only as steady as the machine was.

@@ -23,11 +23,6 @@ Everything `import animkit` offers, as `help()` shows it. How to use it, with ex
 arrays are numpy float64 arrays; quaternions are (w, x, y, z).
 """
 
-# Methods every class has that say nothing about the class.
-INHERITED = {"__init__", "__repr__", "__eq__", "__ne__", "__hash__", "__getstate__",
-             "__setstate__", "__str__"}
-
-
 def split_docstring(name, doc):
     """(signatures, description) of a pybind11 docstring: its leading lines `name(...) -> ...`
     (one per overload, numbered for overloaded functions), then the prose."""
@@ -85,7 +80,7 @@ def class_section(name, cls, missing):
                 missing.append(f"{name}.{member_name}")
             writable = " (read and write)" if member.fset is not None else ""
             lines += [f"### `{member_name}`{writable}", "", doc, ""]
-        elif callable(member) and member_name not in INHERITED - {"__init__"}:
+        elif callable(member):
             if member_name == "__init__":
                 signatures, description = split_docstring("__init__", member.__doc__)
                 if not signatures:

@@ -3,7 +3,6 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 
 #include "animkit/cloth/hessian_pattern.h"

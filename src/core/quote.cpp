@@ -45,6 +45,7 @@ bool append_escaped(std::string& out, std::string_view raw, std::size_t max_char
     const auto c = static_cast<std::uint8_t>(raw[i]);
     std::string piece;  // what raw[i..] shows as
     std::size_t consumed = 1;
+    bool kept_character = false;  // a multi-byte UTF-8 character shown as itself
     if (c >= 0x20 && c < 0x7F) {
       piece = static_cast<char>(c);
     } else if (c == '\n') {
@@ -63,14 +64,14 @@ bool append_escaped(std::string& out, std::string_view raw, std::size_t max_char
         piece = escaped;
       } else {
         piece = raw.substr(i, n);
+        kept_character = true;
       }
     } else {
       char escaped[8];
       std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
       piece = escaped;
     }
-    const bool one_character = consumed > 1 && piece == raw.substr(i, consumed);
-    shown += one_character ? 1 : piece.size();
+    shown += kept_character ? 1 : piece.size();
     if (shown > max_chars) return false;
     out += piece;
     i += consumed;
