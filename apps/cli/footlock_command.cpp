@@ -90,9 +90,12 @@ int run(FootlockArgs args) {
   if (auto ok = write_bvh_file(output->dir() / "fixed.bvh", *clip); !ok) {
     return report_error(ok.error().message);
   }
-  if (auto ok = write_foot_lock_report(output->dir(), *result, settings, args.in,
-                                       motion.frame_count(), motion.frame_time);
-      !ok) {
+  const FootLockClip facts{.input = args.in,
+                           .frames = motion.frame_count(),
+                           .frame_time = motion.frame_time,
+                           .metres_per_unit = args.scale,
+                           .scale_description = metric->description};
+  if (auto ok = write_foot_lock_report(output->dir(), *result, settings, facts); !ok) {
     return report_error(ok.error().message);
   }
   if (auto ok = output->commit(); !ok) return report_error(ok.error().message);

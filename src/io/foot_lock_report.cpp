@@ -19,7 +19,8 @@ const Vec3& ankle(const std::vector<Vec3>& trail, int f, int leg) {
   return trail[static_cast<std::size_t>(f) * 2 + leg];
 }
 
-// Top view: X against Z (metres), both feet, planted spans of the result drawn bold.
+// Top view: X against Z (metres), both feet (the right one dashed), planted spans of the
+// result drawn bold.
 LinePlot trail_plot(const FootLockResult& r, int frames) {
   LinePlot plot;
   plot.title = "Ankle trails from above: before and after foot locking";
@@ -28,7 +29,7 @@ LinePlot trail_plot(const FootLockResult& r, int frames) {
   double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
   for (const auto* trail : {&r.ankles_before, &r.ankles_after}) {
     for (int leg = 0; leg < 2; ++leg) {
-      PlotSeries s{{}, trail == &r.ankles_before ? kBefore : kAfter, 1.2, 1.0, false};
+      PlotSeries s{{}, trail == &r.ankles_before ? kBefore : kAfter, 1.2, 1.0, leg == 1};
       for (int f = 0; f < frames; ++f) {
         const Vec3& a = ankle(*trail, f, leg);
         s.points.emplace_back(a.z(), a.x());
@@ -54,6 +55,7 @@ LinePlot trail_plot(const FootLockResult& r, int frames) {
   plot.legend = {{"before", kBefore, 2.0, false},
                  {"after", kAfter, 2.0, false},
                  {"planted (after)", kPlanted, 4.0, false}};
+  plot.notes = {"solid: left foot, dashed: right foot"};
   return plot;
 }
 
@@ -88,15 +90,17 @@ LinePlot sliding_plot(const FootLockResult& r, int frames) {
 }  // namespace
 
 std::string foot_lock_metrics_json(const FootLockResult& result, const FootLockSettings& s,
-                                   std::string_view input, int frames, double frame_time) {
+                                   const FootLockClip& clip) {
   const FootLockMetrics& m = result.metrics;
   const auto pair = [](int left, int right) {
     return nlohmann::ordered_json{{"left", left}, {"right", right}};
   };
   nlohmann::ordered_json j = {
-      {"input", input},
-      {"frames", frames},
-      {"frame_time", frame_time},
+      {"input", clip.input},
+      {"frames", clip.frames},
+      {"frame_time", clip.frame_time},
+      {"scale",
+       {{"metres_per_unit", clip.metres_per_unit}, {"description", clip.scale_description}}},
       {"contacts", pair(m.contacts[0], m.contacts[1])},
       {"planted_frames", pair(m.planted_frames[0], m.planted_frames[1])},
       {"sliding_cm_per_frame",
@@ -137,13 +141,11 @@ Result<Image> foot_lock_compare_image(const FootLockResult& result, int frames) 
 }
 
 Result<void> write_foot_lock_report(const std::filesystem::path& dir, const FootLockResult& result,
-                                    const FootLockSettings& settings, std::string_view input,
-                                    int frames, double frame_time) {
-  auto image = foot_lock_compare_image(result, frames);
+                                    const FootLockSettings& settings, const FootLockClip& clip) {
+  auto image = foot_lock_compare_image(result, clip.frames);
   if (!image) return fail(image.error().message);
   if (auto ok = write_png(dir / "compare.png", *image); !ok) return ok;
-  return write_file_atomic(dir / "metrics.json",
-                           foot_lock_metrics_json(result, settings, input, frames, frame_time));
+  return write_file_atomic(dir / "metrics.json", foot_lock_metrics_json(result, settings, clip));
 }
 
 }  // namespace animkit

@@ -39,6 +39,8 @@ TEST(FootlockCli, LocksTheWalkAndWritesClipMetricsAndPicture) {
   EXPECT_EQ(metrics["frames"], 994);
   EXPECT_EQ(metrics["contacts"]["left"], 8);
   EXPECT_EQ(metrics["contacts"]["right"], 8);
+  EXPECT_EQ(metrics["scale"]["metres_per_unit"], 0.056444);
+  EXPECT_EQ(metrics["scale"]["description"], "scale 0.056444 m per file unit (given)");
   const double before = metrics["sliding_cm_per_frame"]["before"]["mean"];
   const double after = metrics["sliding_cm_per_frame"]["after"]["mean"];
   EXPECT_LT(after, 0.5);
@@ -129,6 +131,11 @@ TEST(FootlockCli, AClipInCentimetresIsLockedWithoutScaleAndSaysTheScale) {
             0u)
       << r.out;
   EXPECT_NE(r.out.find("contacts left 8 right 8"), std::string::npos) << r.out;
+  // metrics.json keeps the scale and how it was found.
+  const auto metrics = nlohmann::json::parse(read_file(dir / "o" / "metrics.json"));
+  EXPECT_EQ(metrics["scale"]["metres_per_unit"], 0.01);
+  EXPECT_EQ(metrics["scale"]["description"],
+            "scale 0.01 m per file unit (detected: centimetres, legs 80.2 units long)");
 }
 
 TEST(FootlockCli, AWrongScaleFindsNoContactAndFailsInOneLine) {

@@ -101,15 +101,18 @@ TriangleMesh surface_at(const Collider& c, double t) {
 
 // Runs `frames` frames; every one converged (so every collider reached its pose), the
 // colliders where their motions put them, nothing intersecting, pins unmoved. Returns the
-// Newton iterations of all the steps. `first`: the number of the first frame run.
-int run_audited(World& w, int frames, int first = 1) {
+// Newton iterations of all the steps. `first`: the number of the first frame run. Without
+// `converged`, a step may end at the iteration cap, but still with every collider at its pose.
+int run_audited(World& w, int frames, int first = 1, bool converged = true) {
   const ClothState start = w.sim.state();
   int iterations = 0;
   for (int frame = first; frame < first + frames; ++frame) {
     const auto report = w.sim.step(kFrame);
     EXPECT_TRUE(report) << report.error().message;
     if (!report) return iterations;
-    EXPECT_TRUE(report->converged) << "frame " << frame;
+    if (converged) {
+      EXPECT_TRUE(report->converged) << "frame " << frame;
+    }
     EXPECT_TRUE(w.contact->settled()) << "frame " << frame;
     iterations += report->newton_iterations;
     const double t = w.sim.state().time;
@@ -129,14 +132,12 @@ int run_audited(World& w, int frames, int first = 1) {
   return iterations;
 }
 
-// DISABLED: a sphere pushing a hanging sheet at 2 m/s (17 contact distances per frame) does
-// not reach its end pose within 500 Newton iterations (frames 3 and 7 stall millimetres short,
-// also with 4 substeps): each advance closes at most 1 - min_separation of the gap to cloth the
-// push did not move out of the way, and Newton's barrier then reopens the gap by about the
-// contact distance, so the ball creeps. Those steps report not converged; nothing intersects
-// the ball where it is. IPC's remedy (the collider's vertices as unknowns of the same Newton
-// solve, pulled to their poses by an augmented Lagrangian) is not built yet.
-TEST(MovingObstacles, DISABLED_ASphereDrivenIntoAHangingClothPushesItAndNeverPassesThrough) {
+// A sphere pushing a hanging sheet at 2 m/s (17 contact distances per frame). While the
+// obstacles could only push the cloth along each pair's normal, frames 3 and 7 stalled
+// millimetres short of the ball's pose within 500 Newton iterations (also with 4 substeps): the
+// ball's vertices under one cloth triangle pushed it along different normals, tilting it into
+// the ball. The pushed cloth is now carried with the ball when that goes further.
+TEST(MovingObstacles, ASphereDrivenIntoAHangingClothPushesItAndNeverPassesThrough) {
   // 2 m/s: 3.3 cm per frame, 17 times the contact distance, into a cotton sheet at rest.
   const Vec3 velocity(0.0, 0.0, 2.0);
   World w = make_world(
@@ -149,6 +150,20 @@ TEST(MovingObstacles, DISABLED_ASphereDrivenIntoAHangingClothPushesItAndNeverPas
   for (int i = 0; i < w.sim.model().particle_count(); ++i)
     furthest = std::max(furthest, w.sim.state().position(i).z());
   EXPECT_GT(furthest, 0.1);
+}
+
+// A hostile speed on a tiny cloth (5 x 5 particles, 25 cm apart): a ball at 100 m/s, 3.3 m per
+// frame. With normal pushes only, it stalled short of its pose for all the Newton iterations a
+// step allowed (0.49 m short after 300, 50 s a step); carried, it reaches its pose within a few.
+// The sheet's relaxation after such a jolt may still take Newton to its cap (hence no
+// convergence asked here).
+TEST(MovingObstacles, ABallAt100MetresPerSecondCarriesASmallSheetAlong) {
+  World w = make_world(cotton_sheet(4, 1.0, 1.0),
+                       {collider(SphereShape{0.2},
+                                 ScriptedMotion{.initial = {.position = Vec3(0.0, 2.0, 0.0)},
+                                                .linear_velocity = Vec3(0.0, -100.0, 0.0)},
+                                 1)});
+  run_audited(w, 1, 1, false);  // the frame it meets the sheet
 }
 
 // A box turning about its vertical axis under a sheet draped over it: its side faces and
@@ -226,12 +241,13 @@ TEST(MovingObstacles, AColliderMovingAwayLeavesTheClothToFall) {
   EXPECT_LT(lowest, 0.05);  // it fell
 }
 
-// Dragged 2 cm per frame (1.2 m/s) at 1/60 s, one substep stalls short of the target like the
-// test above; four substeps (5 mm each, 2.5 contact distances) reach it every frame.
+// Dragged 2 cm per frame, in one substep: with normal pushes only it stalled short of the
+// target (like the sphere above; 109 s of Newton iterations in all), and needed four substeps
+// (5 mm each, 2.5 contact distances); carrying the pushed cloth, one reaches it every frame.
 TEST(MovingObstacles, AColliderDraggedByHandPushesTheClothWithTheSameGuarantee) {
   // A static ball the viewer drags through a hanging sheet, 2 cm per frame.
   SimulationOptions options = newton();
-  options.substeps = 4;
+  options.substeps = 1;
   World w =
       make_world(hanging_sheet(8, 0.5, 0.25),
                  {collider(SphereShape{0.1}, ScriptedMotion{.initial =

@@ -12,12 +12,24 @@
 
 namespace animkit {
 
-/// The run's facts as JSON: {"input", "frames", "frame_time", "contacts": {"left", "right"},
-/// "planted_frames": {...}, "sliding_cm_per_frame": {"before": {"mean", "max"}, "after":
-/// {...}}, "ik_error_cm": {"mean", "max"}, "max_joint_step_cm": {"before", "after"},
-/// "max_leg_step_cm": {...}, "max_correction_step_cm", "ms_per_frame", "settings": {...}}.
+/// The clip a foot lock ran on, as its report names it.
+struct FootLockClip {
+  std::string_view input;        ///< its path, as given
+  int frames = 0;                ///< frames in the clip
+  double frame_time = 0.0;       ///< seconds per frame
+  double metres_per_unit = 1.0;  ///< the scale it was read at
+  /// That scale and how it was found (MetricClip::description): "scale 0.056444 m per file
+  /// unit (detected: CMU's unit (inch / 0.45), legs 14.2 units long)" or "... (given)".
+  std::string_view scale_description;
+};
+
+/// The run's facts as JSON: {"input", "frames", "frame_time", "scale": {"metres_per_unit",
+/// "description"}, "contacts": {"left", "right"}, "planted_frames": {...}, "sliding_cm_per_frame":
+/// {"before": {"mean", "max"}, "after": {...}}, "ik_error_cm": {"mean", "max"},
+/// "max_joint_step_cm": {"before", "after"}, "max_leg_step_cm": {...},
+/// "max_correction_step_cm", "ms_per_frame", "settings": {...}}.
 std::string foot_lock_metrics_json(const FootLockResult& result, const FootLockSettings& settings,
-                                   std::string_view input, int frames, double frame_time);
+                                   const FootLockClip& clip);
 
 /// Width and height of compare.png: two plots of kFootLockPlotWidth x kFootLockPlotHeight,
 /// one above the other.
@@ -30,7 +42,6 @@ Result<Image> foot_lock_compare_image(const FootLockResult& result, int frames);
 
 /// Writes metrics.json and compare.png into `dir` (which must exist), each atomically.
 Result<void> write_foot_lock_report(const std::filesystem::path& dir, const FootLockResult& result,
-                                    const FootLockSettings& settings, std::string_view input,
-                                    int frames, double frame_time);
+                                    const FootLockSettings& settings, const FootLockClip& clip);
 
 }  // namespace animkit

@@ -80,16 +80,18 @@ void MovingObstacles::push_cloth(const ContactGeometry& g, const std::vector<cha
                                  const std::vector<ContactPair>& pairs) {
   const int n = g.cloth_vertices();
   push_.setZero(x.size());
+  carry_.setZero(x.size());
   pushed_.assign(static_cast<std::size_t>(n), 0.0);
   const auto position = [&](int v) -> Vec3 {
     return v < n ? Vec3(x.segment<3>(3 * v)) : Vec3(g.obstacle_positions.segment<3>(3 * (v - n)));
   };
   const auto moving = [&](int v) -> Vec3 { return move_.segment<3>(3 * (v - n)); };
-  const auto push = [&](int p, double lack, const Vec3& normal) {
+  const auto push = [&](int p, double lack, const Vec3& normal, const Vec3& obstacle_move) {
     if (pinned[static_cast<std::size_t>(p)] || !(lack > pushed_[static_cast<std::size_t>(p)]))
       return;
     pushed_[static_cast<std::size_t>(p)] = lack;
     push_.segment<3>(3 * p) = lack * normal;
+    carry_.segment<3>(3 * p) = obstacle_move;
   };
   for (const ContactPair& pair : pairs) {
     if (pair.kind == ContactKind::edge_edge) {
@@ -109,8 +111,8 @@ void MovingObstacles::push_cloth(const ContactGeometry& g, const std::vector<cha
       const Vec3 edge_move =
           (1.0 - t) * moving(pair.vertices[o]) + t * moving(pair.vertices[o + 1]);
       const double lack = edge_move.dot(normal) - (gap - 0.5 * radius);
-      push(pair.vertices[c], lack, normal);
-      push(pair.vertices[c + 1], lack, normal);
+      push(pair.vertices[c], lack, normal, edge_move);
+      push(pair.vertices[c + 1], lack, normal, edge_move);
       continue;
     }
     if (pair.kind != ContactKind::point_triangle) continue;
@@ -136,11 +138,11 @@ void MovingObstacles::push_cloth(const ContactGeometry& g, const std::vector<cha
       // The obstacle face comes toward p along `normal` (pointing from the face to p).
       const Vec3 face_move = (1.0 - w[0] - w[1]) * moving(pair.vertices[1]) +
                              w[0] * moving(pair.vertices[2]) + w[1] * moving(pair.vertices[3]);
-      push(p, face_move.dot(normal) - (gap - 0.5 * radius), normal);
+      push(p, face_move.dot(normal) - (gap - 0.5 * radius), normal, face_move);
     } else {
       // The obstacle vertex comes toward the cloth triangle along -normal: push it whole.
       const double lack = -moving(p).dot(normal) - (gap - 0.5 * radius);
-      for (int i = 1; i < 4; ++i) push(pair.vertices[i], lack, -normal);
+      for (int i = 1; i < 4; ++i) push(pair.vertices[i], lack, -normal, moving(p));
     }
   }
 }
@@ -156,8 +158,24 @@ void MovingObstacles::advance(ContactGeometry& g, ContactPairFinder& finder,
   push_cloth(g, pinned, x, radius, pairs);
   // Every pair the joint move may bring within `radius`, then its longest safe fraction.
   if (!finder.gather(g, x, &push_, radius, ground, pairs, &end_)) return;
-  const double fraction =
+  double fraction =
       earliest_contact(g, pairs, x, push_, ground.value_or(0.0), min_separation, &move_);
+  if (fraction < 1.0 && carry_ != push_) {
+    // The pushed particles carried along with the obstacles instead: when several obstacle
+    // vertices under one coarse cloth triangle push it along different normals, the normal
+    // pushes tilt it into the obstacle's other vertices and the joint move stalls (fractions
+    // of 1e-5 to 1e-16, hundreds of iterations per step); carried, the pushed cloth keeps its
+    // place on the obstacle. Whichever goes further is taken; Newton then lets it slide.
+    if (finder.gather(g, x, &carry_, radius, ground, carried_pairs_, &end_)) {
+      const double carried = earliest_contact(g, carried_pairs_, x, carry_, ground.value_or(0.0),
+                                              min_separation, &move_);
+      if (carried > fraction) {
+        fraction = carried;
+        push_.swap(carry_);
+        pairs.swap(carried_pairs_);
+      }
+    }
+  }
   if (fraction >= 1.0) {
     g.obstacle_positions = end_;  // exactly: the end pose's vertices, no rounding left over
     x += push_;

@@ -11,7 +11,8 @@
 // obstacles' move would bring closer than half the contact distance to an obstacle face (over
 // the face itself), or under an obstacle vertex, or across an obstacle edge, gets the part of
 // that face's, vertex's or edge's move along the normal which it lacks to stay there
-// (frictionless contact pushes along the normal only). Obstacles and cloth then move
+// (frictionless contact pushes along the normal only), or, when that lets them go less far,
+// the obstacle point's whole move (carried with it). Obstacles and cloth then move
 // together, linearly, by the largest fraction of both moves at which Additive CCD
 // (collision/ccd.h) keeps every pair (obstacle-cloth, cloth-cloth, cloth-ground) at least
 // min_separation of its distance before the move: the same rule as the cloth's own step bound,
@@ -54,7 +55,8 @@ class MovingObstacles {
   bool settled() const { return settled_; }
 
  private:
-  // push_ = what the particles the obstacles' move (move_) brings within `radius` / 2 lack.
+  // push_ = what the particles the obstacles' move (move_) brings within `radius` / 2 lack
+  // along the normal; carry_ = the whole move of the obstacle point that pushes each of them.
   void push_cloth(const ContactGeometry& geometry, const std::vector<char>& pinned,
                   const Eigen::VectorXd& x, double radius, const std::vector<ContactPair>& pairs);
 
@@ -64,6 +66,8 @@ class MovingObstacles {
   std::vector<RigidPose> poses_, aims_;                // reached, and aimed at in this substep
   std::vector<std::optional<Quat>> surface_rotation_;  // a sphere's surface: never turned
   Eigen::VectorXd end_, move_, push_;  // obstacles' ends and remaining move; the cloth's push
+  Eigen::VectorXd carry_;  // the same particles moved as the obstacle point that pushes them
+  std::vector<ContactPair> carried_pairs_;  // the pairs along the carried move
   std::vector<double> pushed_;         // per particle: the push's length so far
   std::vector<Vec3> surface_;          // one collider's world vertices
   bool settled_ = true;
