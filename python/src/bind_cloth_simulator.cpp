@@ -222,8 +222,10 @@ void bind_reports(py::module_& m) {
       .def_readonly("newton_speed_end", &StepReport::newton_speed_end,
                     "|dx|_inf / h of the last Newton direction (m/s), what "
                     "NewtonSettings.velocity_tolerance bounds.")
-      .def_readonly("converged", &StepReport::converged,
-                    "Every substep reached its stopping test.")
+      .def_readonly("speed_tolerance", &StepReport::speed_tolerance,
+                    "The newton_speed_end a substep may end at (m/s; 0 when the velocity stop "
+                    "is off): a converged step met this or gradient_tolerance.")
+      .def_readonly("converged", &StepReport::converged, "Every substep reached its stopping test.")
       .def_readonly("energy", &StepReport::energy, "Total mechanical energy after the step.")
       .def_readonly("ms", &StepReport::ms, "Wall time of the whole step, ms.")
       .def_readonly("friction_iterations", &StepReport::friction_iterations,

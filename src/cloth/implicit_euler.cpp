@@ -142,6 +142,7 @@ void ImplicitEuler::step(ClothState& state, double h, StepReport& report,
   // pose at t + h: until then g is not yet the end's potential).
   bool converged = stop.reached(gradient_norm) && potential_.terms_settled();
   const double speed_stop = options_.velocity_tolerance * bounding_diagonal(state.positions);
+  report.speed_tolerance = speed_stop;
   ++report.friction_iterations;
   for (int k = 0; std::isfinite(gradient_norm) && k < options_.max_iterations; ++k) {
     // Converged: a term that lagged quantities may refresh them and go on (friction's passes).

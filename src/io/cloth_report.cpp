@@ -60,6 +60,7 @@ std::string cloth_metrics_json(const ClothRunInfo& info, std::span<const StepRep
                                    {"gradient_norm_end", r.gradient_norm_end},
                                    {"gradient_tolerance", r.gradient_tolerance},
                                    {"newton_speed_end", r.newton_speed_end},
+                                   {"speed_tolerance", r.speed_tolerance},
                                    {"converged", r.converged},
                                    {"energy", r.energy},
                                    {"ms", r.ms},

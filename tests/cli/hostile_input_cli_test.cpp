@@ -250,9 +250,11 @@ TEST(HostileInputCli, RandomScenesAreRefusedCleanlyOrRunWhole) {
     for (const auto& step : metrics["steps"]) {
       if (!step["converged"].get<bool>()) {
         ++unconverged;
-      } else {
-        EXPECT_LE(step["gradient_norm_end"].get<double>(),
-                  step["gradient_tolerance"].get<double>());
+      } else {  // by the gradient or by the velocity stop (the fast contact settings')
+        EXPECT_TRUE(step["gradient_norm_end"].get<double>() <=
+                        step["gradient_tolerance"].get<double>() ||
+                    step["newton_speed_end"].get<double>() <= step["speed_tolerance"].get<double>())
+            << step;
       }
     }
     EXPECT_EQ(r.err.empty(), unconverged == 0) << r.err;

@@ -109,6 +109,41 @@ TEST(ClothSceneFile, ReadsTheVelocityToleranceAndTheLinearForcing) {
   EXPECT_EQ(scene->contact.hessian, BarrierHessian::adaptive);
 }
 
+// The fast contact settings (use_fast_contact_settings): Newton, multigrid, 1e-4 or the
+// velocity stop at 1e-3, CG to 10%.
+void expect_fast_contact_settings(const ClothWorldDesc& world) {
+  const auto* newton = std::get_if<NewtonSettings>(&world.simulation.integrator);
+  ASSERT_NE(newton, nullptr);
+  EXPECT_EQ(newton->linear_solver, LinearSolverKind::multigrid);
+  EXPECT_EQ(newton->tolerance, 1e-4);
+  EXPECT_EQ(newton->velocity_tolerance, 1e-3);
+  EXPECT_EQ(newton->linear_forcing, 0.1);
+}
+
+TEST(ClothSceneFile, WithoutASolverContactSolvesWithTheFastContactSettings) {
+  // A ball and no "solver": the built-in contact scenes' settings, not the lab's CG to 1e-6
+  // (a 25-particle sheet hit by a box took 35 s a step with those).
+  const auto ball = parse(R"({"colliders": [{"radius": 0.1}]})");
+  ASSERT_TRUE(ball) << ball.error().message;
+  expect_fast_contact_settings(*ball);
+  EXPECT_EQ(ball->contact.hessian, BarrierHessian::adaptive);
+  // The contact's own "hessian" still applies; so does a solver given.
+  const auto projected = parse(R"({"ground": {}, "contact": {"hessian": "projected"}})");
+  ASSERT_TRUE(projected) << projected.error().message;
+  expect_fast_contact_settings(*projected);
+  EXPECT_EQ(projected->contact.hessian, BarrierHessian::projected);
+  const auto pcg = parse(R"({"ground": {}, "solver": {"integrator": "implicit-pcg"}})");
+  ASSERT_TRUE(pcg) << pcg.error().message;
+  EXPECT_EQ(integrator_entry(pcg->simulation.integrator).name, "implicit-pcg");
+  // No contact: the lab's solver.
+  const auto lab = parse("{}");
+  ASSERT_TRUE(lab) << lab.error().message;
+  EXPECT_EQ(integrator_entry(lab->simulation.integrator).name,
+            integrator_entry(ClothWorldDesc{}.simulation.integrator).name);
+  EXPECT_EQ(tolerance_of(lab->simulation.integrator),
+            tolerance_of(ClothWorldDesc{}.simulation.integrator));
+}
+
 TEST(ClothSceneFile, TheDocumentedExampleSceneReadsAndBuilds) {
   const auto scene = read_cloth_scene(ANIMKIT_SOURCE_DIR "/docs/scenes/pillow-drop.json");
   ASSERT_TRUE(scene) << scene.error().message;

@@ -39,6 +39,9 @@ struct StepReport {
   /// |dx|_inf / h of the last Newton direction computed (m/s; 0 before the first), the
   /// quantity NewtonSettings::velocity_tolerance bounds.
   double newton_speed_end = 0.0;
+  /// The newton_speed_end a substep may end at (velocity_tolerance x the bounding box's
+  /// diagonal, m/s; 0 when that stop is off): a converged step met this or gradient_tolerance.
+  double speed_tolerance = 0.0;
   bool converged = true;  ///< every substep reached its stopping test
   double energy = 0.0;    ///< total mechanical energy after the step (cloth_energy().total)
   double ms = 0.0;        ///< wall time of the whole step
