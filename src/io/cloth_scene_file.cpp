@@ -39,7 +39,7 @@ class SceneReader {
       desc.ground = g;
     }
     // Without a solver a scene with contact solves as the built-in contact scenes do (the
-    // lab's CG to 1e-6 is many times slower there); a "contact" "hessian" still applies.
+    // lab's CG to 1e-6 is slower there: docs/contact.md); a "contact" "hessian" still applies.
     const auto* solver = scene.object("solver");
     if (!solver && desc.has_contact()) use_fast_contact_settings(desc);
     if (const auto* contact = scene.object("contact")) read_contact(*contact, desc);

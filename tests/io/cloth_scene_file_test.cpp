@@ -121,8 +121,7 @@ void expect_fast_contact_settings(const ClothWorldDesc& world) {
 }
 
 TEST(ClothSceneFile, WithoutASolverContactSolvesWithTheFastContactSettings) {
-  // A ball and no "solver": the built-in contact scenes' settings, not the lab's CG to 1e-6
-  // (a 25-particle sheet hit by a box took 35 s a step with those).
+  // A ball and no "solver": the built-in contact scenes' settings, not the lab's CG to 1e-6.
   const auto ball = parse(R"({"colliders": [{"radius": 0.1}]})");
   ASSERT_TRUE(ball) << ball.error().message;
   expect_fast_contact_settings(*ball);
