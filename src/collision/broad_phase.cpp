@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "animkit/core/validation.h"
 
@@ -220,51 +221,98 @@ void fill_cells(const HashGrid& grid, const std::vector<Box>& boxes, int first_c
 
 // Stage 4: the wanted pairs of primitives sharing a cell, with overlapping boxes, reported from
 // the cell of their intersection's lower corner only (that corner lies in both boxes, so exactly
-// one shared cell qualifies and no pair comes out twice).
-void collect_pairs(const HashGrid& grid, const std::vector<Box>& boxes,
-                   const std::vector<CellEntry>& entries, const PrimitiveRanges& ranges,
-                   const CollisionMesh& self, ContactCandidates& out) {
-  for (std::size_t begin = 0; begin < entries.size();) {
-    std::size_t end = begin;
-    while (end < entries.size() && entries[end].cell == entries[begin].cell) ++end;
-    for (std::size_t i = begin; i < end; ++i) {
-      const int a = entries[i].primitive, kind_a = ranges.kind_of(a);
-      for (std::size_t j = i + 1; j < end; ++j) {
-        const int b = entries[j].primitive, kind_b = ranges.kind_of(b);  // a < b: kinds ordered
-        const bool wanted = (kind_a == kVertex && kind_b == kTriangle) ||
-                            (kind_a == kEdge && kind_b == kEdge) ||
-                            (kind_a == kVertex && kind_b == kColliderTriangle) ||
-                            (kind_a == kTriangle && kind_b == kColliderVertex) ||
-                            (kind_a == kEdge && kind_b == kColliderEdge);
-        if (!wanted) continue;
-        const Box &box_a = boxes[a], &box_b = boxes[b];
-        if ((box_a.lo.array() > box_b.hi.array()).any() ||
-            (box_b.lo.array() > box_a.hi.array()).any() ||
-            grid.key(box_a.lo.cwiseMax(box_b.lo)) != entries[begin].cell) {
-          continue;
-        }
-        const int ia = a - ranges.offsets[kind_a], ib = b - ranges.offsets[kind_b];
-        if (kind_b == kTriangle) {
-          if (!in_triangle(ia, self.triangles[ib])) out.vertex_triangle.push_back({ia, ib});
-        } else if (kind_b == kEdge) {
-          if (!shares_vertex(self.edges[ia], self.edges[ib])) out.edge_edge.push_back({ia, ib});
-        } else if (kind_b == kColliderTriangle) {
-          out.vertex_collider_triangle.push_back({ia, ib});
-        } else if (kind_b == kColliderVertex) {
-          out.collider_vertex_triangle.push_back({ib, ia});
-        } else {
-          out.edge_collider_edge.push_back({ia, ib});
-        }
+// one shared cell qualifies and no pair comes out twice). A cell's entries are sorted by
+// primitive, so each kind is one run of them: only the runs of wanted kinds meet (a vertex with
+// a triangle, an edge with an edge, ...), never two vertices or two triangles, which a loop over
+// every two entries of the cell spends most of its time rejecting.
+class PairCollector {
+ public:
+  PairCollector(const HashGrid& grid, const std::vector<Box>& boxes, const PrimitiveRanges& ranges,
+                const CollisionMesh& self, bool self_pairs, ContactCandidates& out)
+      : grid_(grid),
+        boxes_(boxes),
+        ranges_(ranges),
+        self_(self),
+        self_pairs_(self_pairs),
+        out_(out) {}
+
+  void collect(const std::vector<CellEntry>& entries) {
+    for (std::size_t begin = 0; begin < entries.size();) {
+      std::size_t end = begin;
+      while (end < entries.size() && entries[end].cell == entries[begin].cell) ++end;
+      collect_cell(&entries[begin], &entries[end]);
+      begin = end;
+    }
+  }
+
+ private:
+  using Run = std::pair<const CellEntry*, const CellEntry*>;
+
+  void collect_cell(const CellEntry* first, const CellEntry* last) {
+    cell_ = first->cell;
+    std::array<Run, 6> runs;
+    const CellEntry* at = first;
+    for (int kind = 0; kind < 6; ++kind) {
+      const CellEntry* run_end = at;
+      while (run_end != last && run_end->primitive < ranges_.offsets[kind + 1]) ++run_end;
+      runs[kind] = {at, run_end};
+      at = run_end;
+    }
+    if (self_pairs_) {
+      each_pair(runs[kVertex], runs[kTriangle], [&](int v, int t) {
+        if (!in_triangle(v, self_.triangles[t])) out_.vertex_triangle.push_back({v, t});
+      });
+      for (const CellEntry* a = runs[kEdge].first; a != runs[kEdge].second; ++a) {
+        each_pair({a, a + 1}, {a + 1, runs[kEdge].second}, [&](int e, int f) {
+          if (!shares_vertex(self_.edges[e], self_.edges[f])) out_.edge_edge.push_back({e, f});
+        });
       }
     }
-    begin = end;
+    each_pair(runs[kVertex], runs[kColliderTriangle], [&](int v, int t) {
+      out_.vertex_collider_triangle.push_back({v, t});
+    });
+    each_pair(runs[kTriangle], runs[kColliderVertex], [&](int t, int v) {
+      out_.collider_vertex_triangle.push_back({v, t});
+    });
+    each_pair(runs[kEdge], runs[kColliderEdge], [&](int e, int f) {
+      out_.edge_collider_edge.push_back({e, f});
+    });
   }
-}
+
+  // Every entry of `as` with every entry of `bs` whose boxes overlap, reported from this cell:
+  // report(index of a within its kind, index of b within its kind).
+  template <class Report>
+  void each_pair(Run as, Run bs, Report&& report) const {
+    if (as.first == as.second || bs.first == bs.second) return;
+    const int base_a = ranges_.offsets[ranges_.kind_of(as.first->primitive)];
+    const int base_b = ranges_.offsets[ranges_.kind_of(bs.first->primitive)];
+    for (const CellEntry* a = as.first; a != as.second; ++a) {
+      const Box& box_a = boxes_[a->primitive];
+      for (const CellEntry* b = bs.first; b != bs.second; ++b) {
+        const Box& box_b = boxes_[b->primitive];
+        if ((box_a.lo.array() > box_b.hi.array()).any() ||
+            (box_b.lo.array() > box_a.hi.array()).any() ||
+            grid_.key(box_a.lo.cwiseMax(box_b.lo)) != cell_) {
+          continue;
+        }
+        report(a->primitive - base_a, b->primitive - base_b);
+      }
+    }
+  }
+
+  const HashGrid& grid_;
+  const std::vector<Box>& boxes_;
+  const PrimitiveRanges& ranges_;
+  const CollisionMesh& self_;
+  const bool self_pairs_;
+  ContactCandidates& out_;
+  std::uint64_t cell_ = 0;
+};
 
 }  // namespace
 
 Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCandidates& out,
-                              const MeshMotion* collider) {
+                              const MeshMotion* collider, bool self_pairs) {
   out.clear();
   if (!(std::isfinite(radius) && radius >= 0.0)) {
     return fail("broad phase radius must be finite and >= 0, got " + format_number(radius));
@@ -278,7 +326,7 @@ Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCand
   if (boxes_.empty()) return {};
   const HashGrid grid = HashGrid::fit(boxes_);
   fill_cells(grid, boxes_, ranges.offsets[3], entries_, scratch_);
-  collect_pairs(grid, boxes_, entries_, ranges, mesh.mesh, out);
+  PairCollector(grid, boxes_, ranges, mesh.mesh, self_pairs, out).collect(entries_);
   std::sort(out.vertex_triangle.begin(), out.vertex_triangle.end());
   std::sort(out.edge_edge.begin(), out.edge_edge.end());
   std::sort(out.vertex_collider_triangle.begin(), out.vertex_collider_triangle.end());

@@ -127,6 +127,34 @@ TEST_P(ContactPairKinds, NothingBeyondTheActivationDistance) {
   EXPECT_EQ(contact_barrier_gauss_newton_hessian(pair, far, 0.0, barrier()).norm(), 0.0);
 }
 
+// The box test the loops over candidate pairs run first: it passes over only pairs whose
+// distance is at least dhat's root, and it does pass over most far pairs.
+TEST_P(ContactPairKinds, TheBoxTestSkipsOnlyPairsBeyondTheActivationDistance) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> shift(-0.4, 0.4);
+  const ContactPair pair = pair_of(GetParam());
+  const LogBarrier b = barrier();
+  int skipped = 0, far = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    std::array<Vec3, 4> p = configuration(pair.kind, rng);
+    // Move the upper primitive anywhere within 0.4 m: near, touching the boxes, or far away.
+    const Vec3 offset(shift(rng), shift(rng), shift(rng));
+    for (int i : pair.kind == ContactKind::edge_edge ? std::vector<int>{2, 3} : std::vector<int>{0})
+      p[i] += offset;
+    const double d = contact_distance_squared(pair, p, -1.0);
+    far += d >= b.dhat();
+    if (!contact_beyond(pair, p, b.dhat())) continue;
+    ++skipped;
+    EXPECT_GE(d, b.dhat()) << "trial " << trial;
+    EXPECT_EQ(contact_barrier(pair, p, -1.0, b), 0.0);
+  }
+  if (pair.kind == ContactKind::ground) {
+    EXPECT_EQ(skipped, 0);  // a plane has no box: never skipped
+  } else {
+    EXPECT_GT(skipped, far / 4) << "of " << far << " far pairs";
+  }
+}
+
 TEST(ContactPair, AParticleOnOrBelowTheGroundIsInContact) {
   const ContactPair pair = pair_of(ContactKind::ground);
   const double inf = std::numeric_limits<double>::infinity();

@@ -201,6 +201,27 @@ TEST(BroadPhase, ColliderPairsAreASupersetOfBruteForce) {
   expect_well_formed(cloth.mesh, candidates);
 }
 
+// Without self pairs (a cloth without self-contact) the cloth-collider lists are the same and
+// the self lists empty.
+TEST(BroadPhase, WithoutSelfPairsOnlyColliderPairsAreFound) {
+  std::mt19937 rng(55);
+  const Grid cloth = make_grid(10, 0.1), floor = make_grid(4, 0.3);
+  const Eigen::VectorXd x = jittered(folded(cloth, 0.45, 0.02), 0.01, rng);
+  const Eigen::VectorXd y = jittered(floor.positions, 0.01, rng);
+  const MeshMotion collider{floor.mesh, y, y};
+  BroadPhase broad_phase;
+  ContactCandidates all, colliders_only;
+  ASSERT_TRUE(broad_phase.find({cloth.mesh, x, x}, 0.03, all, &collider));
+  ASSERT_TRUE(broad_phase.find({cloth.mesh, x, x}, 0.03, colliders_only, &collider, false));
+  EXPECT_GT(all.vertex_triangle.size(), 0u);
+  EXPECT_GT(all.vertex_collider_triangle.size(), 0u);
+  EXPECT_TRUE(colliders_only.vertex_triangle.empty());
+  EXPECT_TRUE(colliders_only.edge_edge.empty());
+  EXPECT_EQ(colliders_only.vertex_collider_triangle, all.vertex_collider_triangle);
+  EXPECT_EQ(colliders_only.collider_vertex_triangle, all.collider_vertex_triangle);
+  EXPECT_EQ(colliders_only.edge_collider_edge, all.edge_collider_edge);
+}
+
 TEST(BroadPhase, DeterministicAndReusable) {
   std::mt19937 rng(54);
   const Grid big = make_grid(14, 0.1), small = make_grid(4, 0.1);

@@ -85,12 +85,13 @@ struct MeshMotion {
 /// query allocates nothing once the vectors have grown to the scene's size.
 class BroadPhase {
  public:
-  /// Fills `out` (cleared first) with the self pairs of `mesh` and, if `collider` is given, the
-  /// pairs between `mesh` and `collider` (none within the collider), that may come closer than
-  /// `radius` (position units, finite, >= 0) anywhere along the motions. Fails on a negative or
-  /// non-finite radius, position vectors of the wrong size or a non-finite coordinate.
+  /// Fills `out` (cleared first) with the self pairs of `mesh` (unless `self_pairs` is false)
+  /// and, if `collider` is given, the pairs between `mesh` and `collider` (none within the
+  /// collider), that may come closer than `radius` (position units, finite, >= 0) anywhere
+  /// along the motions. Fails on a negative or non-finite radius, position vectors of the wrong
+  /// size or a non-finite coordinate.
   Result<void> find(const MeshMotion& mesh, double radius, ContactCandidates& out,
-                    const MeshMotion* collider = nullptr);
+                    const MeshMotion* collider = nullptr, bool self_pairs = true);
 
  private:
   std::vector<broad_phase_detail::Box> boxes_;

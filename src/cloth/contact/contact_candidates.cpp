@@ -16,6 +16,24 @@ double mollifier_threshold(double rest_a2, double rest_b2) {
   return 1e-3 * rest_a2 * rest_b2;
 }
 
+// True when the boxes around the pair's two primitives over the whole move (start to end)
+// are more than `reach` apart along some axis: the primitives stay farther apart than that.
+// Gathered sets hold many such pairs (gather_region.h: they are complete for a region larger
+// than one step), and Additive CCD would spend two distance evaluations on each to find it.
+bool swept_apart(const ContactPair& pair, const std::array<Vec3, 4>& start,
+                 const std::array<Vec3, 4>& end, double reach) {
+  const int first = pair.kind == ContactKind::point_triangle ? 1 : 2;
+  Vec3 lo_a = start[0].cwiseMin(end[0]), hi_a = start[0].cwiseMax(end[0]);
+  Vec3 lo_b = start[first].cwiseMin(end[first]), hi_b = start[first].cwiseMax(end[first]);
+  for (int i = 1; i < 4; ++i) {
+    Vec3& lo = i < first ? lo_a : lo_b;
+    Vec3& hi = i < first ? hi_a : hi_b;
+    lo = lo.cwiseMin(start[i]).cwiseMin(end[i]);
+    hi = hi.cwiseMax(start[i]).cwiseMax(end[i]);
+  }
+  return (lo_b - hi_a).cwiseMax(lo_a - hi_b).maxCoeff() > reach;
+}
+
 }  // namespace
 
 Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
@@ -79,7 +97,8 @@ Result<void> ContactPairFinder::gather(const ContactGeometry& g, const Eigen::Ve
   const MeshMotion obstacles{g.obstacles, g.obstacle_positions,
                              obstacle_end ? *obstacle_end : g.obstacle_positions};
   const bool any_obstacle = !g.obstacles.triangles.empty();
-  if (auto ok = broad_phase_.find(cloth, radius, candidates_, any_obstacle ? &obstacles : nullptr);
+  if (auto ok = broad_phase_.find(cloth, radius, candidates_, any_obstacle ? &obstacles : nullptr,
+                                  g.self_contact);
       !ok) {
     return ok;
   }
@@ -125,7 +144,7 @@ Result<void> ContactPairFinder::gather(const ContactGeometry& g, const Eigen::Ve
 
 double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>& pairs,
                         const Eigen::VectorXd& x, const Eigen::VectorXd& step, double ground,
-                        double min_separation, const Eigen::VectorXd* obstacle_step) {
+                        double reach, double min_separation, const Eigen::VectorXd* obstacle_step) {
   const int n = g.cloth_vertices();
   const auto start_of = [&](int v) { return v < n ? at(x, v) : at(g.obstacle_positions, v - n); };
   const auto move_of = [&](int v) {
@@ -151,7 +170,7 @@ double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>
       moves = moves || !d.isZero(0.0);
       end[i] = start[i] + d;
     }
-    if (!moves) continue;
+    if (!moves || swept_apart(pair, start, end, reach)) continue;
     settings.max_time = bound;  // nothing past the bound found so far matters
     const auto hit = pair.kind == ContactKind::point_triangle
                          ? point_triangle_ccd(start, end, settings)

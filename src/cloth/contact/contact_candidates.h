@@ -65,12 +65,15 @@ class ContactPairFinder {
   Eigen::VectorXd end_;
 };
 
-/// The largest t in (0, 1] such that no pair of `pairs` gets closer than `min_separation` of
-/// its distance at x anywhere on x + s step, s in [0, t] (conservative: Additive CCD, and the
-/// exact bound for the ground). The obstacles move by s obstacle_step (3 per obstacle vertex)
-/// at the same time, or stay with nullptr.
+/// The largest t in (0, 1] such that no pair of `pairs` that comes within `reach` (the contact
+/// distance) on the move gets closer than `min_separation` of its distance at x anywhere on
+/// x + s step, s in [0, t] (conservative: Additive CCD, and the exact bound for the ground).
+/// The obstacles move by s obstacle_step (3 per obstacle vertex) at the same time, or stay
+/// with nullptr. A pair whose two primitives' swept boxes stay more than `reach` apart is
+/// passed over, as the broad phase would not have listed it for this move.
 double earliest_contact(const ContactGeometry& geometry, const std::vector<ContactPair>& pairs,
                         const Eigen::VectorXd& x, const Eigen::VectorXd& step, double ground,
-                        double min_separation, const Eigen::VectorXd* obstacle_step = nullptr);
+                        double reach, double min_separation,
+                        const Eigen::VectorXd* obstacle_step = nullptr);
 
 }  // namespace animkit

@@ -56,6 +56,7 @@ double contact_distance_squared(const ContactPair& pair, const std::array<Vec3, 
 
 double contact_barrier(const ContactPair& pair, const std::array<Vec3, 4>& p, double ground,
                        const LogBarrier& barrier) {
+  if (contact_beyond(pair, p, barrier.dhat())) return 0.0;
   const double d = contact_distance_squared(pair, p, ground);
   if (!(d > 0.0)) return std::numeric_limits<double>::infinity();
   if (d >= barrier.dhat()) return 0.0;

@@ -111,15 +111,20 @@ struct ContactTerm::Impl {
   mutable std::vector<char> pair_active;
   mutable std::vector<Eigen::Matrix<double, 12, 12>> pair_hessians;
 
+  // Within dhat at p: the pair's barrier and its derivatives are not zero.
+  bool active(const ContactPair& pair, const std::array<Vec3, 4>& p) const {
+    return !contact_beyond(pair, p, barrier.dhat()) &&
+           contact_distance_squared(pair, p, ground_height()) < barrier.dhat();
+  }
+
   void evaluate_gradients(const Eigen::VectorXd& x) const {
     pair_gradients.resize(pairs.size());
     parallel::for_each_weighted(static_cast<int>(pairs.size()), kPairWeight, [&](int k) {
       const ContactPair& pair = pairs[static_cast<std::size_t>(k)];
       const std::array<Vec3, 4> p = positions(x, pair);
       pair_gradients[static_cast<std::size_t>(k)] =
-          contact_distance_squared(pair, p, ground_height()) >= barrier.dhat()
-              ? Eigen::Matrix<double, 12, 1>::Zero()
-              : contact_barrier_gradient(pair, p, ground_height(), barrier);
+          !active(pair, p) ? Eigen::Matrix<double, 12, 1>::Zero()
+                           : contact_barrier_gradient(pair, p, ground_height(), barrier);
     });
   }
   void evaluate_hessians(const Eigen::VectorXd& x) const {
@@ -129,7 +134,7 @@ struct ContactTerm::Impl {
       const auto at = static_cast<std::size_t>(k);
       const ContactPair& pair = pairs[at];
       const std::array<Vec3, 4> p = positions(x, pair);
-      pair_active[at] = contact_distance_squared(pair, p, ground_height()) < barrier.dhat();
+      pair_active[at] = active(pair, p);
       if (!pair_active[at]) return;
       pair_hessians[at] =
           !exact_hessian ? contact_barrier_gauss_newton_hessian(pair, p, ground_height(), barrier)
@@ -270,8 +275,9 @@ double ContactTerm::max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& st
       !impl_->region.covers_step(x, step)) {
     if (!impl_->gather(x, &step)) return 0.0;  // a non-finite step: take none of it
   }
-  const double bound = earliest_contact(impl_->geometry, impl_->pairs, x, step,
-                                        impl_->ground_height(), impl_->settings.min_separation);
+  const double bound =
+      earliest_contact(impl_->geometry, impl_->pairs, x, step, impl_->ground_height(),
+                       impl_->settings.thickness, impl_->settings.min_separation);
   if (impl_->settings.hessian == BarrierHessian::adaptive && bound < kFrozenStepFraction)
     impl_->exact_hessian = true;
   return bound;
@@ -345,6 +351,7 @@ void ContactTerm::contact_points(const Eigen::VectorXd& x, std::vector<ContactPo
   const int n = impl_->model->particle_count();
   for (const ContactPair& pair : impl_->pairs) {
     const std::array<Vec3, 4> p = impl_->positions(x, pair);
+    if (contact_beyond(pair, p, impl_->barrier.dhat())) continue;
     const double d2 = contact_distance_squared(pair, p, impl_->ground_height());
     if (d2 >= impl_->barrier.dhat()) continue;
     const auto [first, second] = contact_closest_points(pair, p, impl_->ground_height());
@@ -393,7 +400,9 @@ bool ContactTerm::gaps_settled(const Eigen::VectorXd& x, const Eigen::VectorXd& 
   const Impl& m = *impl_;
   const int n = m.model->particle_count();
   return std::all_of(m.pairs.begin(), m.pairs.end(), [&](const ContactPair& pair) {
-    const double d = contact_distance_squared(pair, m.positions(x, pair), m.ground_height());
+    const std::array<Vec3, 4> p = m.positions(x, pair);
+    if (contact_beyond(pair, p, m.barrier.dhat())) return true;
+    const double d = contact_distance_squared(pair, p, m.ground_height());
     if (d >= m.barrier.dhat()) return true;
     double move = 0.0;  // the obstacles' vertices follow their motions, not dx
     for (int i = 0; i < pair.vertex_count(); ++i) {
@@ -409,8 +418,9 @@ ContactStats ContactTerm::stats(const Eigen::VectorXd& x) const {
   stats.gathers = impl_->gathers;
   double closest = impl_->barrier.dhat();
   for (const ContactPair& pair : impl_->pairs) {
-    const double d =
-        contact_distance_squared(pair, impl_->positions(x, pair), impl_->ground_height());
+    const std::array<Vec3, 4> p = impl_->positions(x, pair);
+    if (contact_beyond(pair, p, impl_->barrier.dhat())) continue;
+    const double d = contact_distance_squared(pair, p, impl_->ground_height());
     if (d < impl_->barrier.dhat()) {
       ++stats.active_pairs;
       closest = std::min(closest, d);

@@ -159,7 +159,7 @@ void MovingObstacles::advance(ContactGeometry& g, ContactPairFinder& finder,
   // Every pair the joint move may bring within `radius`, then its longest safe fraction.
   if (!finder.gather(g, x, &push_, radius, ground, pairs, &end_)) return;
   double fraction =
-      earliest_contact(g, pairs, x, push_, ground.value_or(0.0), min_separation, &move_);
+      earliest_contact(g, pairs, x, push_, ground.value_or(0.0), radius, min_separation, &move_);
   if (fraction < 1.0 && carry_ != push_) {
     // The pushed particles carried along with the obstacles instead: when several obstacle
     // vertices under one coarse cloth triangle push it along different normals, the normal
@@ -168,7 +168,7 @@ void MovingObstacles::advance(ContactGeometry& g, ContactPairFinder& finder,
     // place on the obstacle. Whichever goes further is taken; Newton then lets it slide.
     if (finder.gather(g, x, &carry_, radius, ground, carried_pairs_, &end_)) {
       const double carried = earliest_contact(g, carried_pairs_, x, carry_, ground.value_or(0.0),
-                                              min_separation, &move_);
+                                              radius, min_separation, &move_);
       if (carried > fraction) {
         fraction = carried;
         push_.swap(carry_);

@@ -1,0 +1,59 @@
+// The step bound over gathered pairs (src/cloth/contact/contact_candidates.h): a pair that comes
+// within the contact distance on the move bounds it, a pair whose primitives stay farther apart
+// than that does not, however close it passes relative to its start.
+#include "../../src/cloth/contact/contact_candidates.h"
+
+#include <gtest/gtest.h>
+
+namespace animkit {
+namespace {
+
+// One cloth triangle at height 0 and one obstacle triangle far to its side, 1 m wide.
+struct Scene {
+  ContactGeometry geometry;
+  Eigen::VectorXd cloth;
+};
+
+Scene make_scene(double obstacle_height) {
+  ClothModel model;
+  model.mass = {1.0, 1.0, 1.0};
+  model.pinned = {0, 0, 0};
+  model.triangles = {{0, 1, 2}};
+  TriangleMesh obstacle;
+  obstacle.vertices = {Vec3(2.0, obstacle_height, -0.5), Vec3(3.0, obstacle_height, -0.5),
+                       Vec3(2.5, obstacle_height, 0.5)};
+  obstacle.triangles = {{0, 1, 2}};
+  Scene scene{build_contact_geometry(model, {obstacle}, false).value(), Eigen::VectorXd(9)};
+  scene.cloth << 0.0, 0.0, -0.1, 0.1, 0.0, -0.1, 0.05, 0.0, 0.1;
+  return scene;
+}
+
+// The bound on moving the cloth triangle 2.5 m along x, under (or over) the obstacle, with the
+// pairs gathered generously so the pair is in the list either way.
+double bound_for(double obstacle_height, double reach) {
+  Scene scene = make_scene(obstacle_height);
+  Eigen::VectorXd step = Eigen::VectorXd::Zero(9);
+  for (int v = 0; v < 3; ++v) step[3 * v] = 2.5;
+  ContactPairFinder finder;
+  std::vector<ContactPair> pairs;
+  EXPECT_TRUE(finder.gather(scene.geometry, scene.cloth, &step, 1.0, std::nullopt, pairs));
+  EXPECT_FALSE(pairs.empty());
+  // Half its start distance: CCD keeps every pair above half of where it started.
+  return earliest_contact(scene.geometry, pairs, scene.cloth, step, 0.0, reach, 0.5);
+}
+
+TEST(EarliestContact, APairPassingBeyondTheContactDistanceDoesNotBoundTheStep) {
+  // 0.3 m apart at the closest: under half the 2 m start distance, beyond the 0.1 m reach.
+  EXPECT_EQ(bound_for(0.3, 0.1), 1.0);
+}
+
+TEST(EarliestContact, APairPassingWithinTheContactDistanceBoundsTheStep) {
+  // The same pass with a reach of 0.5 m: the pair comes within it, so CCD keeps it at half its
+  // start distance, and the step stops before the triangles meet.
+  const double bound = bound_for(0.3, 0.5);
+  EXPECT_GT(bound, 0.0);
+  EXPECT_LT(bound, 0.9);
+}
+
+}  // namespace
+}  // namespace animkit
