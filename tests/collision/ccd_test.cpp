@@ -259,11 +259,44 @@ TEST(Ccd, KeepsTheThickness) {
   }
 }
 
-TEST(Ccd, IterationCapStopsEarlyButSafely) {
-  // The point slides 1 over the face at height 1e-3: about a thousand steps of 0.9 * 1e-3.
+// Motion across the gap (cloth sliding over a surface): once the walk proves long, the
+// separating direction clears the rest of the step at once, where the Lipschitz walk alone
+// takes a thousand steps of 0.9 * 1e-3.
+TEST(Ccd, ASlideAlongTheFaceEndsInFewSteps) {
   const Four start = {Vec3(-0.5, 0.1, 1e-3), Vec3(-1, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0)};
+  for (const Vec3& slide : {Vec3(1.0, 0.0, 0.0), Vec3(0.3, 0.8, -5e-4), Vec3(-0.4, 0.2, 0.0)}) {
+    Four end = start;
+    end[0] += slide;  // the last slide descends to half the height: still above 10% of it
+    const CcdResult result = point_triangle_ccd(start, end).value();
+    EXPECT_EQ(result.time_of_impact, 1.0);
+    EXPECT_FALSE(result.collides);
+    EXPECT_LE(result.iterations, 40);
+  }
+  // The Lipschitz walk alone, as the collider's advance uses it: a thousand steps.
   Four end = start;
   end[0].x() += 1.0;
+  AdditiveCcdSettings walk_only;
+  walk_only.along_separation = false;
+  const CcdResult walked = point_triangle_ccd(start, end, walk_only).value();
+  EXPECT_EQ(walked.time_of_impact, 1.0);
+  EXPECT_GT(walked.iterations, 500);
+  // Two edges crossing at 1e-3, one sliding along the other.
+  const Four edges = {Vec3(-1, 0, 1e-3), Vec3(1, 0, 1e-3), Vec3(0, -1, 0), Vec3(0, 1, 0)};
+  Four slid = edges;
+  slid[0].x() += 0.5, slid[1].x() += 0.5;
+  const CcdResult crossing = edge_edge_ccd(edges, slid).value();
+  EXPECT_EQ(crossing.time_of_impact, 1.0);
+  EXPECT_LE(crossing.iterations, 40);
+}
+
+TEST(Ccd, IterationCapStopsEarlyButSafely) {
+  // The point slides 1 along the face's edge ab at height 1e-3 while the face tilts about that
+  // edge, its far vertex c rising 0.1: the gap under the point halves and never closes, but
+  // every bound the walk has (c's rise, the slide) allows only about 1e-2 of the step at a time.
+  const Four start = {Vec3(-0.5, 0.01, 1e-3), Vec3(-1, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0)};
+  Four end = start;
+  end[0].x() += 1.0;
+  end[3].z() += 0.1;
   AdditiveCcdSettings settings;
   const CcdResult full = point_triangle_ccd(start, end, settings).value();
   EXPECT_EQ(full.time_of_impact, 1.0);

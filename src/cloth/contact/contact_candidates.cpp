@@ -144,14 +144,14 @@ Result<void> ContactPairFinder::gather(const ContactGeometry& g, const Eigen::Ve
 
 double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>& pairs,
                         const Eigen::VectorXd& x, const Eigen::VectorXd& step, double ground,
-                        double reach, double min_separation, const Eigen::VectorXd* obstacle_step) {
+                        double reach, double min_separation, const Eigen::VectorXd* obstacle_step,
+                        AdditiveCcdSettings settings) {
   const int n = g.cloth_vertices();
   const auto start_of = [&](int v) { return v < n ? at(x, v) : at(g.obstacle_positions, v - n); };
   const auto move_of = [&](int v) {
     if (v < n) return at(step, v);
     return obstacle_step ? at(*obstacle_step, v - n) : Vec3(Vec3::Zero());
   };
-  AdditiveCcdSettings settings;
   settings.separation_fraction = min_separation;
   double bound = 1.0;
   for (const ContactPair& pair : pairs) {

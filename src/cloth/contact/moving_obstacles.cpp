@@ -42,6 +42,13 @@ void MovingObstacles::begin_substep(ContactGeometry& g, double t_end) {
 
 namespace {
 
+// The joint move of obstacles and pushed cloth stops where Additive CCD's Lipschitz walk stops,
+// short of the exact time a pair would close to its minimum separation. Stopped at the exact
+// time (the walk along the separating direction), a pair the pushes do not open is left at
+// that separation, and each later advance closes it by the same fraction again: a ball dragged
+// through a hanging sheet stalled within a frame (fractions 0.28, then 1e-2 down to 1e-9).
+constexpr AdditiveCcdSettings kAdvanceCcd{.along_separation = false};
+
 // The barycentric coordinates (b, c) of e's projection onto the plane of (0, u, v), unit
 // normal `normal`, twice the area `twice_area`; inside the triangle when b, c >= 0, b + c <= 1.
 std::array<double, 2> projected_barycentric(const Vec3& e, const Vec3& u, const Vec3& v,
@@ -158,8 +165,8 @@ void MovingObstacles::advance(ContactGeometry& g, ContactPairFinder& finder,
   push_cloth(g, pinned, x, radius, pairs);
   // Every pair the joint move may bring within `radius`, then its longest safe fraction.
   if (!finder.gather(g, x, &push_, radius, ground, pairs, &end_)) return;
-  double fraction =
-      earliest_contact(g, pairs, x, push_, ground.value_or(0.0), radius, min_separation, &move_);
+  double fraction = earliest_contact(g, pairs, x, push_, ground.value_or(0.0), radius,
+                                     min_separation, &move_, kAdvanceCcd);
   if (fraction < 1.0 && carry_ != push_) {
     // The pushed particles carried along with the obstacles instead: when several obstacle
     // vertices under one coarse cloth triangle push it along different normals, the normal
@@ -168,7 +175,7 @@ void MovingObstacles::advance(ContactGeometry& g, ContactPairFinder& finder,
     // place on the obstacle. Whichever goes further is taken; Newton then lets it slide.
     if (finder.gather(g, x, &carry_, radius, ground, carried_pairs_, &end_)) {
       const double carried = earliest_contact(g, carried_pairs_, x, carry_, ground.value_or(0.0),
-                                              radius, min_separation, &move_);
+                                              radius, min_separation, &move_, kAdvanceCcd);
       if (carried > fraction) {
         fraction = carried;
         push_.swap(carry_);
