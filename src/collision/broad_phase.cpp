@@ -240,7 +240,7 @@ class PairCollector {
     for (std::size_t begin = 0; begin < entries.size();) {
       std::size_t end = begin;
       while (end < entries.size() && entries[end].cell == entries[begin].cell) ++end;
-      collect_cell(&entries[begin], &entries[end]);
+      collect_cell(entries.data() + begin, entries.data() + end);
       begin = end;
     }
   }
