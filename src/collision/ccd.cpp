@@ -44,7 +44,11 @@ double separated_until(const std::array<Vec3, N>& start, const std::array<Vec3, 
       const double margin = n.dot(start[i] - start[j]) - reach;
       if (!(margin > 0.0)) return 0.0;
       const double closing = n.dot(motion[j] - motion[i]);
-      if (closing > 0.0) until = std::min(until, margin / closing);
+      // margin / closing, without a branch: a pair that does not close gets a time of 1e300
+      // (or margin * 1e300), and the divisor is never zero nor the quotient an overflow.
+      // (A branch does not protect a division: clang divides first and selects after, and the
+      // tests trap floating-point exceptions.)
+      until = std::min(until, margin / std::max({closing, 1e-300 * margin, 1e-300}));
     }
   }
   return until;
@@ -54,8 +58,8 @@ double separated_until(const std::array<Vec3, N>& start, const std::array<Vec3, 
 // when they touch.
 std::optional<Vec3> unit(const Vec3& gap) {
   const double length = gap.norm();
-  if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
-  return gap / length;
+  if (!(length > 1e-300) || !std::isfinite(length)) return std::nullopt;
+  return gap / std::max(length, 1e-300);  // never a division by zero, even if done first
 }
 
 // Walks of up to this many steps keep Additive CCD's steps alone. With the separating

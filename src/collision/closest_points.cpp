@@ -1,6 +1,7 @@
 #include "animkit/collision/closest_points.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "animkit/collision/distance_type.h"
 
@@ -8,9 +9,17 @@ namespace animkit {
 
 namespace {
 
+// A divisor for num / den that is never zero nor small enough for the quotient to overflow:
+// where a compiler divides before it tests den (clang does, and the tests trap floating-point
+// exceptions), the division it does must be harmless.
+double safe_divisor(double num, double den) {
+  return std::max({den, 1e-300 * std::abs(num), 1e-300});
+}
+
 // num / den clamped to [0, 1]; 0 for a degenerate denominator (a zero-length edge).
 double clamped_ratio(double num, double den) {
-  return den > 0.0 ? std::clamp(num / den, 0.0, 1.0) : 0.0;
+  const double ratio = std::clamp(num / safe_divisor(num, den), 0.0, 1.0);
+  return den > 0.0 ? ratio : 0.0;
 }
 
 }  // namespace
@@ -45,7 +54,7 @@ std::array<double, 3> closest_on_triangle(const Vec3& p, const Vec3& a, const Ve
   }
   const double sum = va + vb + vc;
   if (sum > kParallelTolerance * ab.squaredNorm() * ac.squaredNorm()) {
-    const double v = vb / sum, w = vc / sum;
+    const double v = vb / safe_divisor(vb, sum), w = vc / safe_divisor(vc, sum);
     return {1.0 - v - w, v, w};
   }
   // Zero area: the nearest of the three edges.
