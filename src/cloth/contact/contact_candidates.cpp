@@ -16,24 +16,6 @@ double mollifier_threshold(double rest_a2, double rest_b2) {
   return 1e-3 * rest_a2 * rest_b2;
 }
 
-// True when the boxes around the pair's two primitives over the whole move (start to end)
-// are more than `reach` apart along some axis: the primitives stay farther apart than that.
-// Gathered sets hold many such pairs (gather_region.h: they are complete for a region larger
-// than one step), and Additive CCD would spend two distance evaluations on each to find it.
-bool swept_apart(const ContactPair& pair, const std::array<Vec3, 4>& start,
-                 const std::array<Vec3, 4>& end, double reach) {
-  const int first = pair.kind == ContactKind::point_triangle ? 1 : 2;
-  Vec3 lo_a = start[0].cwiseMin(end[0]), hi_a = start[0].cwiseMax(end[0]);
-  Vec3 lo_b = start[first].cwiseMin(end[first]), hi_b = start[first].cwiseMax(end[first]);
-  for (int i = 1; i < 4; ++i) {
-    Vec3& lo = i < first ? lo_a : lo_b;
-    Vec3& hi = i < first ? hi_a : hi_b;
-    lo = lo.cwiseMin(start[i]).cwiseMin(end[i]);
-    hi = hi.cwiseMax(start[i]).cwiseMax(end[i]);
-  }
-  return (lo_b - hi_a).cwiseMax(lo_a - hi_b).maxCoeff() > reach;
-}
-
 }  // namespace
 
 Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
@@ -170,7 +152,10 @@ double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>
       moves = moves || !d.isZero(0.0);
       end[i] = start[i] + d;
     }
-    if (!moves || swept_apart(pair, start, end, reach)) continue;
+    // Swept boxes more than `reach` apart: the pair stays farther apart than that. Gathered
+    // sets hold many such pairs (gather_region.h: complete for a region larger than one
+    // step), and Additive CCD would spend two distance evaluations on each to find it.
+    if (!moves || contact_box_gap(pair, start, end) > reach) continue;
     settings.max_time = bound;  // nothing past the bound found so far matters
     const auto hit = pair.kind == ContactKind::point_triangle
                          ? point_triangle_ccd(start, end, settings)

@@ -71,13 +71,13 @@ class ContactPairFinder {
 /// x + s step, s in [0, t] (conservative: Additive CCD, and the exact bound for the ground).
 /// The obstacles move by s obstacle_step (3 per obstacle vertex) at the same time, or stay
 /// with nullptr. A pair whose two primitives' swept boxes stay more than `reach` apart is
-/// passed over, as the broad phase would not have listed it for this move. `ccd` sets how
+/// passed over, as the broad phase would not have listed it for this move. `settings` says how
 /// pairs are walked (AdditiveCcdSettings::along_separation); its separation fraction and end
 /// are this function's.
 double earliest_contact(const ContactGeometry& geometry, const std::vector<ContactPair>& pairs,
                         const Eigen::VectorXd& x, const Eigen::VectorXd& step, double ground,
                         double reach, double min_separation,
                         const Eigen::VectorXd* obstacle_step = nullptr,
-                        AdditiveCcdSettings ccd = {});
+                        AdditiveCcdSettings settings = {});
 
 }  // namespace animkit

@@ -31,6 +31,23 @@ struct ContactPair {
   bool operator==(const ContactPair&) const = default;
 };
 
+/// How far apart the axis-aligned boxes around the pair's two primitives are, along the axis
+/// that separates them most (<= 0 when the boxes overlap), each box holding its primitive at
+/// both positions `a` and `b` (the two ends of a linear move; pass one configuration twice).
+/// The primitives are at least that far apart anywhere on the move. Not for ground pairs.
+inline double contact_box_gap(const ContactPair& pair, const std::array<Vec3, 4>& a,
+                              const std::array<Vec3, 4>& b) {
+  const int first = pair.kind == ContactKind::point_triangle ? 1 : 2;
+  Vec3 lo[2] = {a[0].cwiseMin(b[0]), a[first].cwiseMin(b[first])};
+  Vec3 hi[2] = {a[0].cwiseMax(b[0]), a[first].cwiseMax(b[first])};
+  for (int i = 1; i < 4; ++i) {
+    const int side = i < first ? 0 : 1;
+    lo[side] = lo[side].cwiseMin(a[i]).cwiseMin(b[i]);
+    hi[side] = hi[side].cwiseMax(a[i]).cwiseMax(b[i]);
+  }
+  return (lo[1] - hi[0]).cwiseMax(lo[0] - hi[1]).maxCoeff();
+}
+
 /// True when the pair's two primitives are certainly farther apart than sqrt(dhat): their
 /// axis-aligned boxes lie more than that apart along some axis. A few comparisons against the
 /// dozens of operations of a classified distance; most candidate pairs are beyond dhat (about
@@ -39,11 +56,7 @@ struct ContactPair {
 /// at least dhat as well: skipping it changes no result. Never true for ground pairs.
 inline bool contact_beyond(const ContactPair& pair, const std::array<Vec3, 4>& p, double dhat) {
   if (pair.kind == ContactKind::ground) return false;
-  const int first = pair.kind == ContactKind::point_triangle ? 1 : 2;
-  Vec3 lo_a = p[0], hi_a = p[0], lo_b = p[first], hi_b = p[first];
-  for (int i = 1; i < first; ++i) lo_a = lo_a.cwiseMin(p[i]), hi_a = hi_a.cwiseMax(p[i]);
-  for (int i = first + 1; i < 4; ++i) lo_b = lo_b.cwiseMin(p[i]), hi_b = hi_b.cwiseMax(p[i]);
-  const double gap = (lo_b - hi_a).cwiseMax(lo_a - hi_b).maxCoeff();
+  const double gap = contact_box_gap(pair, p, p);
   return gap > 0.0 && gap * gap > (1.0 + 1e-6) * dhat;
 }
 
