@@ -27,6 +27,12 @@ set(ANIMKIT_SLOW_TEST_FILTER "*Slow.*")
 # ctest -j starts the costliest tests first: the slow ones then run beside the many short
 # ones instead of alone at the end (ctest's own timings replace this after the first run).
 set(ANIMKIT_SLOW_TEST_COST 1000)
+# The same for the few tests outside `slow` that run a whole scene or start Blender (tens of
+# seconds, a minute under the sanitizers): on a fresh tree ctest knows no timings yet and starts
+# tests in the order they were added, and these came last, so each suite ended with one of them
+# running alone on one core (the sanitizer suite's last 69 s were example.cpp_drape_to_gltf;
+# the Release suite's last 54 s blender.cloth_modal).
+set(ANIMKIT_LONG_TEST_COST 100)
 
 # One thread a test (OMP_NUM_THREADS, include/animkit/core/threads.h): ctest -j already gives
 # every core a test, and a second thread per test only waits for a core
@@ -45,6 +51,11 @@ function(animkit_discover_tests target label)
   gtest_discover_tests(${target} DISCOVERY_TIMEOUT 120 TEST_FILTER "${ANIMKIT_SLOW_TEST_FILTER}"
                        PROPERTIES LABELS slow TIMEOUT ${ANIMKIT_SLOW_TEST_TIMEOUT}
                                   COST ${ANIMKIT_SLOW_TEST_COST} ${ANIMKIT_TEST_THREADS} ${ARGN})
+endfunction()
+
+# Marks tests registered with add_test that take tens of seconds: ctest -j starts them early.
+function(animkit_start_early)
+  set_tests_properties(${ARGN} PROPERTIES COST ${ANIMKIT_LONG_TEST_COST})
 endfunction()
 
 # Labels the tests registered with add_test by name: `label` and its tier's timeout.
