@@ -32,4 +32,12 @@ PcgResult BlockJacobiPcg::solve(const BlockHessian& a, const Eigen::VectorXd& b,
       workspace_);
 }
 
+PcgResult BlockJacobiPcg::refine(const BlockHessian& a, const Eigen::VectorXd& b,
+                                 Eigen::VectorXd& x, double tolerance, int max_iterations) {
+  return preconditioned_cg(
+      model_, a, b, x, tolerance, max_iterations,
+      [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { apply_preconditioner(r, z); },
+      workspace_, CgStart::given);
+}
+
 }  // namespace animkit

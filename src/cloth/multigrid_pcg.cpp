@@ -31,6 +31,16 @@ PcgResult MultigridPcg::solve(const BlockHessian& a, const Eigen::VectorXd& b, E
     result.relative_residual = 1.0;
     return result;
   }
+  return iterate(a, b, x, tolerance, max_iterations, CgStart::zero);
+}
+
+PcgResult MultigridPcg::refine(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                               double tolerance, int max_iterations) {
+  return iterate(a, b, x, tolerance, max_iterations, CgStart::given);
+}
+
+PcgResult MultigridPcg::iterate(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                                double tolerance, int max_iterations, CgStart start) {
   // The V-cycle is SPD when A is; for an indefinite A (the exact Hessian) CG reports it. The
   // products take the energy terms' blocks as the hierarchy assembled them (add_term_products).
   return preconditioned_cg(
@@ -39,8 +49,8 @@ PcgResult MultigridPcg::solve(const BlockHessian& a, const Eigen::VectorXd& b, E
         multigrid_->add_term_products(p, ap);
       },
       b, x, tolerance, max_iterations,
-      [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { multigrid_->apply(r, z); },
-      workspace_);
+      [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { multigrid_->apply(r, z); }, workspace_,
+      start);
 }
 
 }  // namespace animkit

@@ -27,30 +27,42 @@ CgWorkspace::CgWorkspace(int particles)
 
 PcgResult preconditioned_cg(const ClothModel& model, const BlockHessian& a,
                             const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance,
-                            int max_iterations, const Preconditioner& precondition,
-                            CgWorkspace& w) {
+                            int max_iterations, const Preconditioner& precondition, CgWorkspace& w,
+                            CgStart start) {
   return preconditioned_cg(
       [&](const Eigen::VectorXd& p, Eigen::VectorXd& ap) { a.multiply(model, p, ap); }, b, x,
-      tolerance, max_iterations, precondition, w);
+      tolerance, max_iterations, precondition, w, start);
 }
 
 PcgResult preconditioned_cg(const LinearOperator& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                             double tolerance, int max_iterations,
-                            const Preconditioner& precondition, CgWorkspace& w) {
+                            const Preconditioner& precondition, CgWorkspace& w, CgStart start) {
   const int n = static_cast<int>(b.size() / 3);
   PcgResult result;
-  x.setZero();
+  if (start == CgStart::zero) x.setZero();
   const double b_norm = std::sqrt(dot(b, b, w));
   if (b_norm == 0.0) {
+    x.setZero();
     result.converged = true;
     return result;
   }
-  w.r = b;
   const double threshold = tolerance * b_norm;
+  double r_norm = b_norm;
+  if (start == CgStart::zero) {
+    w.r = b;
+  } else {
+    a(x, w.ap);
+    w.r = b - w.ap;
+    r_norm = std::sqrt(dot(w.r, w.r, w));
+    if (r_norm <= threshold) {
+      result.relative_residual = r_norm / b_norm;
+      result.converged = true;
+      return result;
+    }
+  }
   precondition(w.r, w.z);
   w.p = w.z;
   double rz = dot(w.r, w.z, w);
-  double r_norm = b_norm;
   // With the exact Hessian the preconditioner itself can be indefinite; then r.z may be <= 0
   // and CG has no meaning: report it like negative curvature, so the caller projects.
   if (!(rz > 0.0)) {

@@ -295,5 +295,45 @@ TEST(MultigridPcg, ZeroRightHandSideGivesZero) {
   EXPECT_EQ(x.norm(), 0.0);
 }
 
+// Refining a loose answer goes on from its residual: it reaches the tighter tolerance (the true
+// residual, recomputed here) in fewer iterations than solving again from zero, for both
+// preconditioners; an answer that already meets the tolerance is returned untouched.
+template <class Solver>
+void expect_refining_goes_on_from_the_answer(const NewtonSystem& system) {
+  Solver solver(system.model);
+  const auto true_residual = [&](const Eigen::VectorXd& x) {
+    Eigen::VectorXd ax(x.size());
+    system.a.multiply(system.model, x, ax);
+    return (system.b - ax).norm() / system.b.norm();
+  };
+  Eigen::VectorXd loose(system.b.size()), tight(system.b.size());
+  const PcgResult first = solver.solve(system.a, system.b, loose, 1e-1, 1000);
+  ASSERT_TRUE(first.converged);
+  const PcgResult fresh = solver.solve(system.a, system.b, tight, 1e-3, 1000);
+  ASSERT_TRUE(fresh.converged);
+
+  (void)solver.solve(system.a, system.b, tight, 1e-1, 1000);  // the loose answer again
+  EXPECT_EQ(tight, loose);
+  const PcgResult refined = solver.refine(system.a, system.b, tight, 1e-3, 1000);
+  EXPECT_TRUE(refined.converged);
+  EXPECT_LE(true_residual(tight), 1.0001e-3);
+  EXPECT_LT(refined.iterations, fresh.iterations);
+  EXPECT_GT(refined.iterations, 0);
+
+  const Eigen::VectorXd before = tight;
+  const PcgResult again = solver.refine(system.a, system.b, tight, 1e-2, 1000);
+  EXPECT_TRUE(again.converged);
+  EXPECT_EQ(again.iterations, 0);
+  EXPECT_EQ(tight, before);
+}
+
+TEST(MultigridPcg, RefiningALooseAnswerGoesOnFromIt) {
+  expect_refining_goes_on_from_the_answer<MultigridPcg>(hanging_system(cotton(16, 1e4), 10));
+}
+
+TEST(BlockJacobiPcg, RefiningALooseAnswerGoesOnFromIt) {
+  expect_refining_goes_on_from_the_answer<BlockJacobiPcg>(hanging_system(cotton(16, 1e4), 10));
+}
+
 }  // namespace
 }  // namespace animkit

@@ -20,6 +20,10 @@ class BlockJacobiPcg {
   /// |b|, `max_iterations`, or a direction of non-positive curvature (see PcgResult).
   PcgResult solve(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                   double tolerance, int max_iterations);
+  /// Refines the last solve's answer x of A x = b to the tighter `tolerance`, going on from x
+  /// with the inverse blocks that solve computed: `a` and `b` must be the same as then.
+  PcgResult refine(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                   double tolerance, int max_iterations);
 
  private:
   void apply_preconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;

@@ -48,10 +48,8 @@ class ImplicitEuler final : public ClothIntegrator {
   bool next_lagging_pass(const GradientStop& stop, double& gradient_norm, StepReport& report);
   double newton_direction(double gradient_norm, double relative_gradient, IterationRecord& record,
                           StepReport& report);
-  bool solve_newton_system(double relative_gradient, IterationRecord& record,
-                           double forcing_override = 0.0);
-  std::optional<double> verified_speed(double relative_gradient, double h, IterationRecord& record,
-                                       StepReport& report);
+  bool solve_newton_system(double relative_gradient, IterationRecord& record);
+  std::optional<double> verified_speed(double h, IterationRecord& record, StepReport& report);
   double step_bound(StepReport& report);
   std::optional<double> line_search(double slope, double bound, IterationRecord& record,
                                     StepReport& report);

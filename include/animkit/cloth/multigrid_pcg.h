@@ -42,6 +42,10 @@ class MultigridPcg {
   /// `max_iterations`, or a direction of non-positive curvature (see PcgResult).
   PcgResult solve(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                   double tolerance, int max_iterations);
+  /// Refines the last solve's answer x of A x = b to the tighter `tolerance`, going on from x
+  /// with the hierarchy that solve built: `a` and `b` must be the same as then.
+  PcgResult refine(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                   double tolerance, int max_iterations);
 
   /// The hierarchy's number of levels (1: no coarsening).
   int level_count() const;
@@ -52,6 +56,9 @@ class MultigridPcg {
   void apply_preconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z);
 
  private:
+  PcgResult iterate(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                    double tolerance, int max_iterations, CgStart start);
+
   const ClothModel& model_;
   std::unique_ptr<SmoothedAggregation> multigrid_;
   CgWorkspace workspace_;

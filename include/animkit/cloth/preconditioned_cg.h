@@ -43,15 +43,25 @@ using Preconditioner = std::function<void(const Eigen::VectorXd& r, Eigen::Vecto
 /// y = A x.
 using LinearOperator = std::function<void(const Eigen::VectorXd& x, Eigen::VectorXd& y)>;
 
-/// Solves A x = b from x = 0 until |b - A x| <= tolerance |b|, `max_iterations`, or a sign that
-/// A is not positive definite. Its vector operations run on the library's threads, with sums
-/// over fixed chunks: the same bits for any thread count.
+/// Where a CG solve starts.
+enum class CgStart {
+  zero,  ///< x = 0
+  /// The x passed in, an earlier solve's answer to be refined: CG goes on from its residual
+  /// b - A x (one more product with A) and stops at once if that already meets the tolerance.
+  given,
+};
+
+/// Solves A x = b from x = 0 (or from x, see CgStart) until |b - A x| <= tolerance |b|,
+/// `max_iterations`, or a sign that A is not positive definite. Its vector operations run on
+/// the library's threads, with sums over fixed chunks: the same bits for any thread count.
 PcgResult preconditioned_cg(const LinearOperator& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                             double tolerance, int max_iterations,
-                            const Preconditioner& precondition, CgWorkspace& w);
+                            const Preconditioner& precondition, CgWorkspace& w,
+                            CgStart start = CgStart::zero);
 /// The same with A the Newton system's blocks (BlockHessian::multiply).
 PcgResult preconditioned_cg(const ClothModel& model, const BlockHessian& a,
                             const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance,
-                            int max_iterations, const Preconditioner& precondition, CgWorkspace& w);
+                            int max_iterations, const Preconditioner& precondition, CgWorkspace& w,
+                            CgStart start = CgStart::zero);
 
 }  // namespace animkit
