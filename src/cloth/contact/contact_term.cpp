@@ -117,6 +117,14 @@ struct ContactTerm::Impl {
            contact_distance_squared(pair, p, ground_height()) < barrier.dhat();
   }
 
+  // BarrierHessian::adaptive: a pair closer than kCollapsedGapFraction of the thickness takes
+  // the projected exact Hessian whatever the substep's mode (contact.h).
+  bool collapsed(const ContactPair& pair, const std::array<Vec3, 4>& p) const {
+    return settings.hessian == BarrierHessian::adaptive &&
+           contact_distance_squared(pair, p, ground_height()) <
+               kCollapsedGapFraction * kCollapsedGapFraction * barrier.dhat();
+  }
+
   void evaluate_gradients(const Eigen::VectorXd& x) const {
     pair_gradients.resize(pairs.size());
     parallel::for_each_weighted(static_cast<int>(pairs.size()), kPairWeight, [&](int k) {
@@ -137,8 +145,9 @@ struct ContactTerm::Impl {
       pair_active[at] = active(pair, p);
       if (!pair_active[at]) return;
       pair_hessians[at] =
-          !exact_hessian ? contact_barrier_gauss_newton_hessian(pair, p, ground_height(), barrier)
-                         : contact_barrier_derivatives(pair, p, ground_height(), barrier).hessian;
+          !exact_hessian && !collapsed(pair, p)
+              ? contact_barrier_gauss_newton_hessian(pair, p, ground_height(), barrier)
+              : contact_barrier_derivatives(pair, p, ground_height(), barrier).hessian;
     });
   }
 };
