@@ -330,7 +330,8 @@ void bind_colliders(py::module_& m) {
           },
           "How each pair's barrier Hessian is formed: 'projected' (exact, eigen-projected), "
           "'gauss_newton' (rank one, PSD by construction) or 'adaptive' (Gauss-Newton until "
-          "collision detection freezes a step, then projected for the rest of the substep).")
+          "collision detection freezes a step, then projected for the rest of the substep; "
+          "projected at once for a pair closer than 1e-3 of the thickness).")
       .def("__repr__", [](const ContactSettings& s) {
         return "ContactSettings(thickness=" + repr_number(s.thickness) +
                ", stiffness=" + repr_number(s.stiffness) +
