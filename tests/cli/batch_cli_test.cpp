@@ -11,7 +11,7 @@
 #include "../support/run_command.h"
 #include "../support/temp_files.h"
 
-namespace {
+namespace batch_cli_test {
 
 namespace fs = std::filesystem;
 using animkit::testing_support::read_file;
@@ -141,4 +141,4 @@ TEST(BatchCli, BadJobsAreOneLineAndExit2) {
   EXPECT_NE(r.err.find("no scene files (*.json) in the folder"), std::string::npos) << r.err;
 }
 
-}  // namespace
+}  // namespace batch_cli_test

@@ -15,7 +15,7 @@
 #include "../support/temp_files.h"
 #include "animkit/cloth/integrator_registry.h"
 
-namespace {
+namespace cloth_cli_test {
 
 namespace fs = std::filesystem;
 using animkit::testing_support::read_file;
@@ -240,4 +240,4 @@ TEST(ClothCli, AnUnknownOptionPointsAtTheCommandsOwnHelp) {
             "cloth --help)\n");
 }
 
-}  // namespace
+}  // namespace cloth_cli_test

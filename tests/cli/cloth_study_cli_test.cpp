@@ -9,7 +9,7 @@
 #include "animkit/cloth/convergence_study.h"
 #include "animkit/io/png.h"
 
-namespace {
+namespace cloth_study_cli_test {
 
 namespace fs = std::filesystem;
 using animkit::testing_support::read_file;
@@ -94,4 +94,4 @@ TEST(ClothStudyCli, BadArgumentsGetOneLineAndNoFiles) {
   EXPECT_NE(no_out.err.find("--out"), std::string::npos) << no_out.err;
 }
 
-}  // namespace
+}  // namespace cloth_study_cli_test

@@ -9,7 +9,7 @@
 #include "../support/run_command.h"
 #include "../support/temp_files.h"
 
-namespace {
+namespace cloth_world_cli_test {
 
 namespace fs = std::filesystem;
 using animkit::testing_support::read_file;
@@ -103,8 +103,6 @@ INSTANTIATE_TEST_SUITE_P(
         BadWorld{"--scene ''", "--scene needs a built-in scene's name or a .json file, got ''"},
         BadWorld{"--wind 1,x,0", "--wind expects X,Y,Z in m/s, got '1,x,0'"}));
 
-}  // namespace
-
 TEST(ClothWorldCli, RunsABuiltInSceneAndReportsItsContacts) {
   const fs::path out = animkit::testing_support::fresh_dir("cloth_scene_builtin");
   const auto r = run_command(kCli + " cloth --scene drape-sphere --frames 3 --no-picture --out " +
@@ -161,3 +159,5 @@ TEST(ClothWorldCli, SceneErrorsSayWhatIsWrong) {
     EXPECT_EQ(r.err, "animkit: error: " + c.message + "\n");
   }
 }
+
+}  // namespace cloth_world_cli_test

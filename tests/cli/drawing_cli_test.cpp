@@ -12,7 +12,7 @@
 #include "../trajectory/glyph_images.h"
 #include "animkit/io/png.h"
 
-namespace {
+namespace drawing_cli_test {
 
 namespace fs = std::filesystem;
 using namespace animkit::testing_support;
@@ -243,4 +243,4 @@ TEST(DrawingViewer, DrawsTextFromTheCommandLine) {
 }
 #endif
 
-}  // namespace
+}  // namespace drawing_cli_test

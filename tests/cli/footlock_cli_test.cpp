@@ -14,7 +14,7 @@
 #include "animkit/io/png.h"
 #include "animkit/io/video_writer.h"
 
-namespace {
+namespace footlock_cli_test {
 
 namespace fs = std::filesystem;
 using animkit::testing_support::read_file;
@@ -152,4 +152,4 @@ TEST(FootlockCli, AWrongScaleFindsNoContactAndFailsInOneLine) {
   EXPECT_FALSE(fs::exists(dir / "o"));
 }
 
-}  // namespace
+}  // namespace footlock_cli_test

@@ -11,7 +11,7 @@
 #include "../support/run_command.h"
 #include "../support/temp_files.h"
 
-namespace {
+namespace gltf_cli_test {
 
 namespace fs = std::filesystem;
 using animkit::testing_support::read_file;
@@ -109,4 +109,4 @@ TEST(GltfCli, FootLockWritesTheFixedWalkInMetres) {
   EXPECT_NEAR(times["max"][0].get<double>(), 993 * 0.0083333, 1e-3);
 }
 
-}  // namespace
+}  // namespace gltf_cli_test

@@ -22,7 +22,7 @@
 #include "animkit/io/obj_mesh.h"
 #include "animkit/io/point_cache.h"
 
-namespace {
+namespace hostile_input_cli_test {
 
 namespace fs = std::filesystem;
 using animkit::testing_support::run_command;
@@ -287,4 +287,4 @@ TEST(HostileInputCli, RandomScenesAreRefusedCleanlyOrRunWhole) {
   std::printf("random scenes: %d ran, %d refused\n", ran, refused);
 }
 
-}  // namespace
+}  // namespace hostile_input_cli_test

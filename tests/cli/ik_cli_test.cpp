@@ -10,7 +10,7 @@
 #include "../support/run_command.h"
 #include "../support/temp_files.h"
 
-namespace {
+namespace ik_cli_test {
 
 namespace fs = std::filesystem;
 using animkit::testing_support::run_command;
@@ -169,4 +169,4 @@ TEST(DemoCli, DrawsEveryShapeWithBothSolvers) {
   }
 }
 
-}  // namespace
+}  // namespace ik_cli_test

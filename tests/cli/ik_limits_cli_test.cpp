@@ -12,7 +12,7 @@
 #include "../support/run_command.h"
 #include "../support/temp_files.h"
 
-namespace {
+namespace ik_limits_cli_test {
 
 namespace fs = std::filesystem;
 using animkit::testing_support::read_file;
@@ -157,4 +157,4 @@ TEST(IkLimitsCli, BadLimitsAndSolversAreOneLineErrors) {
   }
 }
 
-}  // namespace
+}  // namespace ik_limits_cli_test

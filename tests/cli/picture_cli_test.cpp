@@ -11,7 +11,7 @@
 #include "animkit/io/png.h"
 #include "animkit/io/video_writer.h"
 
-namespace {
+namespace picture_cli_test {
 
 namespace fs = std::filesystem;
 using animkit::Image;
@@ -328,4 +328,4 @@ TEST(Viewer, BadOptionsAreRejected) {
 }
 #endif
 
-}  // namespace
+}  // namespace picture_cli_test

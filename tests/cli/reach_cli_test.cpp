@@ -15,7 +15,7 @@
 #include "animkit/io/png.h"
 #include "animkit/io/reach_report.h"
 
-namespace {
+namespace reach_cli_test {
 
 namespace fs = std::filesystem;
 using animkit::Vec3;
@@ -207,4 +207,4 @@ TEST(ReachCli, TheTargetTakesCommasAsIkDoesAndSpacesToo) {
   EXPECT_EQ(read_file(dir / "a" / "reached.bvh"), read_file(dir / "b" / "reached.bvh"));
 }
 
-}  // namespace
+}  // namespace reach_cli_test

@@ -25,7 +25,7 @@
 
 extern char** environ;
 
-namespace {
+namespace reliability_cli_test {
 
 namespace fs = std::filesystem;
 using animkit::testing_support::read_file;
@@ -240,4 +240,4 @@ TEST(VideoPaths, AVideoInTheOutFolderArrivesWithTheRest) {
   EXPECT_FALSE(fs::exists(out / "v.gif"));
 }
 
-}  // namespace
+}  // namespace reliability_cli_test

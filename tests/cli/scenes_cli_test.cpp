@@ -9,7 +9,7 @@
 #include "../support/temp_files.h"
 #include "animkit/scene/scene_registry.h"
 
-namespace {
+namespace scenes_cli_test {
 
 using animkit::testing_support::run_command;
 
@@ -64,4 +64,4 @@ TEST(ScenesCli, WritesABuiltInSceneAsAFileThatRunsAsTheScene) {
             "tablecloth, flag, spinning-sphere, fold)\n");
 }
 
-}  // namespace
+}  // namespace scenes_cli_test
