@@ -26,8 +26,9 @@ CONFIGURE_RELEASE = $(CMAKE) -S . -B $(RELEASE_DIR) $(call GENERATOR,$(RELEASE_D
 # against 122 s, friction_test.cpp 52 s against 77 s). Line tables only (-g1), not full debug
 # information: the sanitizers' reports still name file and line, and the tree compiles
 # faster. No benchmarks and no Python module there (an extension under ASan needs the runtime
-# preloaded into the interpreter). The test programs' own code gets ASan without UBSan
-# (top-level CMakeLists.txt, ANIMKIT_SANITIZE).
+# preloaded into the interpreter). The test programs' own code gets ASan without UBSan, and
+# UBSan leaves Eigen's headers alone (top-level CMakeLists.txt, ANIMKIT_SANITIZE;
+# cmake/ubsan_ignorelist.txt).
 CONFIGURE_SANITIZE = $(CMAKE) -S . -B $(SANITIZE_DIR) $(call GENERATOR,$(SANITIZE_DIR)) \
 	-DCMAKE_CXX_COMPILER=clang++-16 -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g1 -O1" \
 	-DANIMKIT_SANITIZE=ON -DANIMKIT_BUILD_FUZZERS=ON \
