@@ -317,7 +317,8 @@ void bind_colliders(py::module_& m) {
       .def_readwrite("thickness", &ContactSettings::thickness,
                      "Barrier activation distance dhat, m, > 0.")
       .def_readwrite("stiffness", &ContactSettings::stiffness,
-                     "Barrier stiffness kappa, J/m^4; 0 picks it from the cloth's mass.")
+                     "Barrier stiffness kappa, J/m^4; 0 picks it from the cloth's mass and the "
+                     "colliders' speed.")
       .def_readwrite("self_contact", &ContactSettings::self_contact,
                      "Whether the cloth also repels itself.")
       .def_readwrite("min_separation", &ContactSettings::min_separation,

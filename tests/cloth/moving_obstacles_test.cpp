@@ -166,6 +166,34 @@ TEST(MovingObstacles, ABallAt100MetresPerSecondCarriesASmallSheetAlong) {
   run_audited(w, 1, 1, false);  // the frame it meets the sheet
 }
 
+// The automatic barrier stiffness balances the larger of a particle's weight and the force
+// that brings it to a moving collider's speed within the substep (contact_term.cpp); a
+// collider slower than g h, and a hand-set stiffness, leave it as it is.
+TEST(MovingObstacles, AFastColliderRaisesTheAutomaticStiffnessForItsSubstep) {
+  const ClothDesc sheet = cotton_sheet(4, 1.0, 1.0);
+  const auto ball_at = [](double speed) {
+    return collider(SphereShape{0.2},
+                    ScriptedMotion{.initial = {.position = Vec3(0.0, 2.0, 0.0)},
+                                   .linear_velocity = Vec3(0.0, -speed, 0.0)});
+  };
+  World still = make_world(sheet, {ball_at(0.0)});
+  const double weight_kappa = still.contact->stiffness();
+  ASSERT_GT(weight_kappa, 0.0);
+  const double h = 0.01, g = 9.81;  // cotton_sheet's gravity
+  for (const double speed : {0.05, 10.0, 100.0}) {
+    World w = make_world(sheet, {ball_at(speed)});
+    w.contact->prepare(w.sim.state(), h);
+    EXPECT_NEAR(w.contact->stiffness() / weight_kappa, std::max(1.0, speed / (h * g)), 1e-9)
+        << speed << " m/s";
+  }
+  auto set = ContactTerm::create(std::make_shared<const ClothModel>(still.sim.model()),
+                                 {.thickness = 2e-3, .stiffness = 1e5},
+                                 {.colliders = {ball_at(100.0)}});
+  ASSERT_TRUE(set) << set.error().message;
+  (*set)->prepare(still.sim.state(), h);
+  EXPECT_EQ((*set)->stiffness(), 1e5);
+}
+
 // A box turning about its vertical axis under a sheet draped over it: its side faces and
 // corners sweep into the hanging cloth (0.28 m/s at the corners) and must push it round.
 TEST(MovingObstacles, ABoxTurningUnderADrapedClothPushesItRound) {

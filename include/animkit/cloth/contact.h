@@ -95,7 +95,9 @@ struct ContactSettings {
   /// dhat, m: the barrier acts on pairs closer than this (the cloth's thickness), > 0.
   double thickness = 2e-3;
   /// kappa, J/m^4; 0 (default) picks it so that a particle of average mass rests on a surface
-  /// at about half the thickness under gravity (at least 1 m/s^2 of it), see contact.cpp.
+  /// at about half the thickness under gravity (at least 1 m/s^2 of it), or, in a substep in
+  /// which a collider moves at v, under the force m v / h that brings it to that speed when
+  /// that is larger (contact_term.cpp).
   double stiffness = 0.0;
   /// The cloth's own points and triangles, and edges, repel each other too.
   bool self_contact = true;
@@ -202,7 +204,7 @@ class ContactTerm final : public EnergyTerm {
   /// slides against).
   const Eigen::VectorXd& obstacle_start_positions() const;
 
-  /// The barrier stiffness in use (J/m^4).
+  /// The barrier stiffness in use (J/m^4): this substep's when automatic (ContactSettings).
   double stiffness() const;
   /// Contacts at the last iterate.
   ContactStats stats(const Eigen::VectorXd& x) const;

@@ -1,5 +1,6 @@
 #include "moving_obstacles.h"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <utility>
@@ -23,6 +24,7 @@ void MovingObstacles::add(Collider collider, int first_vertex) {
 void MovingObstacles::begin_substep(ContactGeometry& g, double t_end) {
   g.obstacle_start_positions = g.obstacle_positions;  // same size: no allocation after the first
   end_ = g.obstacle_positions;                        // fixed meshes end where they are
+  largest_surface_move_ = 0.0;
   for (std::size_t c = 0; c < colliders_.size(); ++c) {
     aims_[c] = targets_[c] ? *targets_[c] : pose_at(colliders_[c].model().desc.motion, t_end);
     RigidPose surface = aims_[c];
@@ -33,6 +35,8 @@ void MovingObstacles::begin_substep(ContactGeometry& g, double t_end) {
       end_.segment<3>(at) = surface.to_world(local[i]);
       // The material point at the vertex: carried by the whole motion, spin included.
       const Vec3 start = g.obstacle_start_positions.segment<3>(at);
+      largest_surface_move_ =
+          std::max(largest_surface_move_, (end_.segment<3>(at) - start).norm());
       g.obstacle_motion.segment<3>(at) = aims_[c].to_world(poses_[c].to_local(start)) - start;
     }
   }

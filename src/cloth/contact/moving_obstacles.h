@@ -53,6 +53,9 @@ class MovingObstacles {
                double min_separation, Eigen::VectorXd& x, std::vector<ContactPair>& pairs);
   /// Every obstacle at its end.
   bool settled() const { return settled_; }
+  /// The longest straight move of a collider surface's vertex from its start to its end in
+  /// this substep, m (a sphere's spin moves no vertex of its surface).
+  double largest_surface_move() const { return largest_surface_move_; }
 
  private:
   // push_ = what the particles the obstacles' move (move_) brings within `radius` / 2 lack
@@ -70,6 +73,7 @@ class MovingObstacles {
   std::vector<ContactPair> carried_pairs_;  // the pairs along the carried move
   std::vector<double> pushed_;         // per particle: the push's length so far
   std::vector<Vec3> surface_;          // one collider's world vertices
+  double largest_surface_move_ = 0.0;
   bool settled_ = true;
 };
 
