@@ -35,6 +35,8 @@ constexpr double kHalfThicknessForce = 4.3294;
 // A pair's barrier derivatives (a 12 x 12 Hessian and its eigendecomposition) cost about as
 // much as this many iterations of a light per-particle loop (parallel::for_each_weighted).
 constexpr int kPairWeight = 64;
+// And whether a pair is within dhat (its primitives' boxes, then its distance).
+constexpr int kActiveTestWeight = 8;
 
 // The most a vertex of an active pair may move in Newton's next correction, as a fraction of
 // the pair's distance, for a substep to end on the correction's size
@@ -112,12 +114,15 @@ struct ContactTerm::Impl {
     return true;
   }
 
-  // Per pair at x, each pair into its own slot, computed over the threads (the pairs are then
-  // summed in their order, so the bits do not depend on the thread count): the barrier's
-  // gradient (without kappa; zero beyond dhat), or whether the pair is active and its
-  // PSD Hessian (ContactSettings::hessian).
+  // The pairs within dhat at x (indices into `pairs`, in their order), then per active pair
+  // the barrier's gradient or its PSD Hessian (ContactSettings::hessian), without kappa, each
+  // into its own slot, computed over the threads (summed in their order, so the bits do not
+  // depend on the thread count). Only the active pairs get slots: along a fast collider's move
+  // the gathered set can hold a hundred thousand pairs of which a few dozen are within dhat,
+  // and a 12 x 12 slot for each of them cost more in memory traffic than the derivatives.
+  mutable std::vector<char> pair_active;  // per gathered pair: active at x
+  mutable std::vector<int> active_pairs;
   mutable std::vector<Eigen::Matrix<double, 12, 1>> pair_gradients;
-  mutable std::vector<char> pair_active;
   mutable std::vector<Eigen::Matrix<double, 12, 12>> pair_hessians;
 
   // Within dhat at p: the pair's barrier and its derivatives are not zero.
@@ -134,26 +139,35 @@ struct ContactTerm::Impl {
                kCollapsedGapFraction * kCollapsedGapFraction * barrier.dhat();
   }
 
-  void evaluate_gradients(const Eigen::VectorXd& x) const {
-    pair_gradients.resize(pairs.size());
-    parallel::for_each_weighted(static_cast<int>(pairs.size()), kPairWeight, [&](int k) {
+  void find_active(const Eigen::VectorXd& x) const {
+    pair_active.resize(pairs.size());
+    parallel::for_each_weighted(static_cast<int>(pairs.size()), kActiveTestWeight, [&](int k) {
       const ContactPair& pair = pairs[static_cast<std::size_t>(k)];
-      const std::array<Vec3, 4> p = positions(x, pair);
-      pair_gradients[static_cast<std::size_t>(k)] =
-          !active(pair, p) ? Eigen::Matrix<double, 12, 1>::Zero()
-                           : contact_barrier_gradient(pair, p, ground_height(), barrier);
+      pair_active[static_cast<std::size_t>(k)] = active(pair, positions(x, pair));
+    });
+    active_pairs.clear();
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      if (pair_active[k]) active_pairs.push_back(static_cast<int>(k));
+    }
+  }
+
+  void evaluate_gradients(const Eigen::VectorXd& x) const {
+    find_active(x);
+    pair_gradients.resize(active_pairs.size());
+    parallel::for_each_weighted(static_cast<int>(active_pairs.size()), kPairWeight, [&](int a) {
+      const ContactPair& pair = pairs[static_cast<std::size_t>(active_pairs[a])];
+      pair_gradients[static_cast<std::size_t>(a)] =
+          contact_barrier_gradient(pair, positions(x, pair), ground_height(), barrier);
     });
   }
+
   void evaluate_hessians(const Eigen::VectorXd& x) const {
-    pair_active.resize(pairs.size());
-    pair_hessians.resize(pairs.size());
-    parallel::for_each_weighted(static_cast<int>(pairs.size()), kPairWeight, [&](int k) {
-      const auto at = static_cast<std::size_t>(k);
-      const ContactPair& pair = pairs[at];
+    find_active(x);
+    pair_hessians.resize(active_pairs.size());
+    parallel::for_each_weighted(static_cast<int>(active_pairs.size()), kPairWeight, [&](int a) {
+      const ContactPair& pair = pairs[static_cast<std::size_t>(active_pairs[a])];
       const std::array<Vec3, 4> p = positions(x, pair);
-      pair_active[at] = active(pair, p);
-      if (!pair_active[at]) return;
-      pair_hessians[at] =
+      pair_hessians[static_cast<std::size_t>(a)] =
           !exact_hessian && !collapsed(pair, p)
               ? contact_barrier_gauss_newton_hessian(pair, p, ground_height(), barrier)
               : contact_barrier_derivatives(pair, p, ground_height(), barrier).hessian;
@@ -334,12 +348,12 @@ double ContactTerm::difference(const Eigen::VectorXd& x, const Eigen::VectorXd& 
 void ContactTerm::add_gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const {
   const int n = impl_->model->particle_count();
   impl_->evaluate_gradients(x);
-  for (std::size_t k = 0; k < impl_->pairs.size(); ++k) {
-    const ContactPair& pair = impl_->pairs[k];
+  for (std::size_t a = 0; a < impl_->active_pairs.size(); ++a) {
+    const ContactPair& pair = impl_->pairs[static_cast<std::size_t>(impl_->active_pairs[a])];
     for (int i = 0; i < pair.vertex_count(); ++i) {
       const int v = pair.vertices[i];
       if (v < n)
-        gradient.segment<3>(3 * v) += impl_->kappa * impl_->pair_gradients[k].segment<3>(3 * i);
+        gradient.segment<3>(3 * v) += impl_->kappa * impl_->pair_gradients[a].segment<3>(3 * i);
     }
   }
 }
@@ -348,10 +362,9 @@ void ContactTerm::add_hessian(const Eigen::VectorXd& x, bool /*projected: always
                               std::vector<HessianBlock>& blocks) const {
   const int n = impl_->model->particle_count();
   impl_->evaluate_hessians(x);
-  for (std::size_t k = 0; k < impl_->pairs.size(); ++k) {
-    if (!impl_->pair_active[k]) continue;
-    const ContactPair& pair = impl_->pairs[k];
-    const Eigen::Matrix<double, 12, 12>& hessian = impl_->pair_hessians[k];
+  for (std::size_t a = 0; a < impl_->active_pairs.size(); ++a) {
+    const ContactPair& pair = impl_->pairs[static_cast<std::size_t>(impl_->active_pairs[a])];
+    const Eigen::Matrix<double, 12, 12>& hessian = impl_->pair_hessians[a];
     // The cloth's rows and columns of the pair's PSD Hessian (a principal submatrix: PSD too).
     for (int i = 0; i < pair.vertex_count(); ++i) {
       if (pair.vertices[i] >= n) continue;
