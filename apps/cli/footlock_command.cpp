@@ -28,6 +28,7 @@ constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 
 struct FootlockArgs {
   std::string in, out, video;
+  PictureArgs video_size;  ///< --video-size (only its width and height)
   double scale = 1.0;
   bool scale_given = false;  ///< else detected from the legs (body_scale.h)
   FootLockSettings settings;
@@ -59,7 +60,7 @@ int run(FootlockArgs args) {
   std::string video = args.video;
   auto output = RunOutput::begin(args.out, video);
   if (!output) return report_error(output.error().message);
-  PictureArgs picture_args;
+  PictureArgs picture_args = args.video_size;
   picture_args.no_picture = true;  // compare.png is a plot, not a rendering
   picture_args.video = video;
   // BVH files print the frame time rounded (0.0083333 s): 120.0005 fps would be taken every
@@ -136,6 +137,8 @@ std::function<int()> add_footlock_command(CLI::App& app) {
   cmd->add_option("--video", args->video,
                   "Also render the walk before (orange lines) and after (blue bones) to this "
                   ".mp4 or .gif (needs OpenGL and ffmpeg)");
+  add_size_option(*cmd, "--video-size", args->video_size,
+                  "Video size in pixels, WIDTHxHEIGHT (default 960x720)");
   CLI::Option* scale = cmd->add_option(
       "--scale", args->scale,
       "Metres per file unit (CMU's BVH: 0.056444); default: told from the legs' length (metres, "

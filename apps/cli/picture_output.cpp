@@ -14,18 +14,24 @@ void add_picture_options(CLI::App& command, PictureArgs& args, const std::string
                    "Do not render " + png_name + " into the --out folder (no OpenGL needed)");
   command.add_option("--video", args.video,
                      "Also render every frame into FILE.mp4 or FILE.gif (needs ffmpeg)");
+  add_size_option(command, "--picture-size", args,
+                  "Picture and video size in pixels, WIDTHxHEIGHT (default 960x720)");
+}
+
+void add_size_option(CLI::App& command, const std::string& name, PictureArgs& args,
+                     const std::string& help) {
   command.add_option_function<std::string>(
-      "--picture-size",
-      [&args](const std::string& text) {
+      name,
+      [&args, name](const std::string& text) {
         const auto size = apps::parse_pixel_size(text, 16);
         if (!size) {
-          throw CLI::ValidationError("--picture-size",
+          throw CLI::ValidationError(name,
                                      "must be WIDTHxHEIGHT, each 16..8192, got '" + text + "'");
         }
         args.width = size->width;
         args.height = size->height;
       },
-      "Picture and video size in pixels, WIDTHxHEIGHT (default 960x720)");
+      help);
 }
 
 Result<PictureOutput> PictureOutput::open(const PictureArgs& args, bool has_out_folder,

@@ -21,6 +21,10 @@ struct PictureArgs {
 /// file name in the --out folder.
 void add_picture_options(CLI::App& command, PictureArgs& args, const std::string& png_name);
 
+/// Adds an option `name` taking WIDTHxHEIGHT (each 16..8192 pixels) into args.width and height.
+void add_size_option(CLI::App& command, const std::string& name, PictureArgs& args,
+                     const std::string& help);
+
 class PictureOutput {
  public:
   /// Opens what `args` asks for: the renderer when a PNG (with an --out folder) or a video is

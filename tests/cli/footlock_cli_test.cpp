@@ -77,17 +77,18 @@ TEST(FootlockCli, VideoShowsTheWalkAtSixtyFramesPerSecond) {
   ASSERT_TRUE(fs::exists(kWalk)) << kWalk << " is not here";
   if (!animkit::find_ffmpeg()) GTEST_SKIP() << "ffmpeg is not installed";
   const fs::path out = fresh_dir("video") / "run";
-  const auto r =
-      run_command(kCli + " footlock --in " + kWalk.string() + " --scale 0.056444 --out " +
-                  out.string() + " --video " + (out / "walk.mp4").string());
+  // Small frames: 497 of them at the default 960 x 720 take 20 s to render and encode.
+  const auto r = run_command(kCli + " footlock --in " + kWalk.string() +
+                             " --scale 0.056444 --out " + out.string() + " --video " +
+                             (out / "walk.mp4").string() + " --video-size 160x120");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(out / "fixed.bvh"));
   // 994 frames at 120 fps, every second one kept.
   const auto probe = run_command(
       "ffprobe -v error -count_frames -select_streams v:0 "
-      "-show_entries stream=nb_read_frames -of csv=p=0 " +
+      "-show_entries stream=width,height,nb_read_frames -of csv=p=0 " +
       (out / "walk.mp4").string());
-  EXPECT_EQ(probe.out, "497\n");
+  EXPECT_EQ(probe.out, "160,120,497\n");
 }
 
 TEST(FootlockCli, InIsRequired) {
