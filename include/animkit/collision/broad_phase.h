@@ -7,8 +7,8 @@
 // Each primitive gets an axis-aligned box around its positions at t = 0 and t = 1 (so it holds
 // the primitive over the whole linear motion), inflated by radius / 2: if two primitives come
 // closer than the radius, their boxes overlap. The boxes are entered in the cells of a uniform
-// grid (cell size: the primitives' mean box size, doubled while the boxes would fill more than
-// 16 cells each on average), the entries sorted by cell, and the pairs sharing a cell whose
+// grid (cell size: the mesh primitives' mean box size, doubled while the boxes would fill more
+// than 16 cells each on average), the entries sorted by cell, and the pairs sharing a cell whose
 // boxes overlap reported from the one cell holding the lower corner of the boxes' intersection
 // (so once, without a global de-duplication). Cost: near linear in the number of primitives
 // plus candidates (a radix sort of the cell entries). Output sorted, so deterministic.
