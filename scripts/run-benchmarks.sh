@@ -42,6 +42,7 @@ run footlock_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=
 run cloth_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 run multigrid_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 run parallel_bench
+run fast_collider_bench
 run drape_bench --benchmark_filter='^drape/(animkit/41x41(/fast)?|bullet/41x41)/iterations'
 python3 scripts/performance-page.py "$results" docs/performance.md
 echo "wrote $results/*.json and docs/performance.md"
