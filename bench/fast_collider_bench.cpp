@@ -22,7 +22,8 @@ namespace {
 constexpr int kFrames = 4;
 
 std::string ball_scene(int speed, int tessellation) {
-  // The ball starts 0.4 s (10 m/s) or 0.03 s (100 m/s) of fall above the sheet at y = 1.
+  // The ball's lowest point starts 0.8 m (10 m/s) or 2.8 m (100 m/s) above the sheet at y = 1:
+  // it meets the sheet in the third or the first step.
   const double height = speed >= 100 ? 4.0 : 2.0;
   return R"({"cloth": {"grid": 4, "size": 1, "height": 1, "material": "cotton", "pins": "none",
                        "offset": [-0.5, 0, 0]},

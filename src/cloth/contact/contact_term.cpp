@@ -118,7 +118,7 @@ struct ContactTerm::Impl {
   // the barrier's gradient or its PSD Hessian (ContactSettings::hessian), without kappa, each
   // into its own slot, computed over the threads (summed in their order, so the bits do not
   // depend on the thread count). Only the active pairs get slots: along a fast collider's move
-  // the gathered set can hold a hundred thousand pairs of which a few dozen are within dhat,
+  // the gathered set can hold tens of thousands of pairs of which a few dozen are within dhat,
   // and a 12 x 12 slot for each of them cost more in memory traffic than the derivatives.
   mutable std::vector<char> pair_active;  // per gathered pair: active at x
   mutable std::vector<int> active_pairs;
