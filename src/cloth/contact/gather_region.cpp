@@ -16,11 +16,15 @@ void GatherRegion::set(const Eigen::VectorXd& x, const Eigen::VectorXd* step, do
   const Eigen::Index n = x.size();
   lower_.resize(n);
   extent_.resize(n);
+  reach_.setZero(n / 3);
   for (Eigen::Index k = 0; k < n; ++k) {
     const double ahead = step ? kMargin * (*step)[k] : 0.0;
     lower_[k] = std::min(x[k], x[k] + ahead) - min_reach;
     extent_[k] = std::abs(ahead) + 2.0 * min_reach;
+    const double farthest = std::abs(ahead) + min_reach;
+    reach_[k / 3] += farthest * farthest;
   }
+  reach_ = reach_.cwiseSqrt();
   obstacles_ = obstacle_positions;
   valid_ = true;
 }

@@ -28,6 +28,12 @@ class GatherRegion {
            const Eigen::VectorXd& obstacle_positions);
   const Eigen::VectorXd& lower() const { return lower_; }
   const Eigen::VectorXd& extent() const { return extent_; }
+  /// How far particle i can get from its position at set() without leaving its box: the
+  /// distance to the box's farthest corner. A pair of primitives whose distance at set()'s x
+  /// exceeds dhat plus its two primitives' reaches (the largest of their particles'; 0 for
+  /// obstacles) stays beyond dhat anywhere in the region: a point of a primitive is a convex
+  /// combination of its vertices, so it moves no farther than the farthest of them.
+  double reach(int i) const { return reach_[i]; }
 
   /// Forget the boxes: the next question gathers again.
   void clear() { valid_ = false; }
@@ -51,6 +57,7 @@ class GatherRegion {
 
   bool valid_ = false;
   Eigen::VectorXd lower_, extent_;  // per coordinate: the box is [lower, lower + extent]
+  Eigen::VectorXd reach_;           // per particle
   Eigen::VectorXd obstacles_;       // the obstacles' positions at the gather
 };
 
