@@ -1,12 +1,18 @@
 // The region where a gathered pair set stays complete (src/cloth/contact/gather_region.h), and
 // the contact term's reuse of its pairs inside it: a term that gathered once sees, anywhere in
 // the region, exactly the contacts a term gathering there afresh sees (same active pairs, same
-// value and gradient); a step leaving the region gathers again; resting cloth runs the broad
-// phase a few times, not twice per Newton iteration.
+// value and gradient); the set holds only the pairs that can come within the thickness there;
+// a step leaving the region gathers again; resting cloth runs the broad phase a few times, not
+// twice per Newton iteration.
 #include "../../src/cloth/contact/gather_region.h"
+
+#include "../../src/cloth/contact/contact_candidates.h"
+#include "../../src/cloth/contact/contact_pair.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -44,6 +50,8 @@ TEST(GatherRegion, HoldsThePointsOfItsBoxesOnlyWithTheObstaclesWhereTheyWere) {
   EXPECT_FALSE(region.covers(Eigen::VectorXd(Eigen::Vector3d(nan, 2.0, 3.0)), obstacles));
   EXPECT_FALSE(region.covers_step(x, Eigen::Vector3d(0.0, nan, 0.0)));
   EXPECT_FALSE(region.covers(x, Eigen::VectorXd(Eigen::Vector3d(0.0, 1e-9, 0.0))));  // moved
+  // The farthest corner of the box from x: 0.15 + 0.01 along x, 0.3 + 0.01 along y, 0.01.
+  EXPECT_NEAR(region.reach(0), std::sqrt(0.16 * 0.16 + 0.31 * 0.31 + 0.01 * 0.01), 1e-15);
   region.clear();
   EXPECT_FALSE(region.covers(x, obstacles));
 }
@@ -140,6 +148,50 @@ TEST(GatherRegion, PairsGatheredOnceSeeEverywhereInTheRegionWhatAFreshGatherSees
   }
   EXPECT_GT(compared, 50);
   EXPECT_GT(most_active, 100);  // the scene does bring many pairs into play
+}
+
+TEST(GatherRegion, KeepsOnlyThePairsThatCanComeWithinTheThicknessInsideTheRegion) {
+  const FoldedSheet sheet = folded_sheet();
+  const auto term = contact_for(sheet);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> move(-2e-3, 2e-3);
+  Eigen::VectorXd step(sheet.x.size());
+  for (Eigen::Index k = 0; k < step.size(); ++k) step[k] = move(rng);
+  ASSERT_GT(term->max_step(sheet.x, step), 0.0);
+  // What the broad phase finds for the same boxes, and which of those pairs can come within
+  // the thickness: their distance at x less the reaches of their two primitives.
+  constexpr double kThickness = 2e-3;
+  GatherRegion region;
+  region.set(sheet.x, &step, GatherRegion::kFloorFraction * kThickness,
+             term->geometry().obstacle_positions);
+  ContactPairFinder finder;
+  std::vector<ContactPair> found;
+  ASSERT_TRUE(finder.gather(term->geometry(), region.lower(), &region.extent(), kThickness,
+                            sheet.obstacles.ground_height, found));
+  const int n = sheet.model.particle_count();
+  int reachable = 0;
+  for (const ContactPair& pair : found) {
+    if (pair.kind == ContactKind::ground) {
+      ++reachable;
+      continue;
+    }
+    std::array<Vec3, 4> p;
+    double reach = 0.0, first = 0.0;
+    for (int i = 0; i < 4; ++i) {
+      const int v = pair.vertices[i];
+      p[i] = v < n ? Vec3(sheet.x.segment<3>(3 * v))
+                   : Vec3(term->geometry().obstacle_positions.segment<3>(3 * (v - n)));
+      const bool in_first = i < (pair.kind == ContactKind::point_triangle ? 1 : 2);
+      const double r = v < n ? region.reach(v) : 0.0;
+      (in_first ? first : reach) = std::max(in_first ? first : reach, r);
+    }
+    if (std::sqrt(contact_distance_squared(pair, p, 0.0)) < kThickness + first + reach)
+      ++reachable;
+  }
+  EXPECT_EQ(term->stats(sheet.x).candidate_pairs, reachable);
+  // The layers and the ball lie within millimetres, yet a fifth of the pairs can be dropped.
+  EXPECT_LT(5 * reachable, 4 * static_cast<int>(found.size()))
+      << reachable << " of " << found.size() << " pairs can come within the thickness";
 }
 
 TEST(GatherRegion, AStepOutsideTheRegionGathersAgainAndStillStopsAtTheGround) {
