@@ -1,9 +1,15 @@
 // The step bound over gathered pairs (src/cloth/contact/contact_candidates.h): a pair that comes
 // within the contact distance on the move bounds it, a pair whose primitives stay farther apart
-// than that does not, however close it passes relative to its start.
+// than that does not, however close it passes relative to its start; a pair whose vertices
+// move too little to close its gap is passed over when its distance at the start is known.
 #include "../../src/cloth/contact/contact_candidates.h"
 
+#include "../../src/cloth/contact/contact_pair.h"
+
 #include <gtest/gtest.h>
+
+#include <array>
+#include <vector>
 
 namespace animkit {
 namespace {
@@ -53,6 +59,40 @@ TEST(EarliestContact, APairPassingWithinTheContactDistanceBoundsTheStep) {
   const double bound = bound_for(0.3, 0.5);
   EXPECT_GT(bound, 0.0);
   EXPECT_LT(bound, 0.9);
+}
+
+TEST(EarliestContact, KnownStartDistancesPassOverOnlyPairsThatCannotCloseTheirGap) {
+  const Scene scene = make_scene(0.3);
+  Eigen::VectorXd step = Eigen::VectorXd::Zero(9);
+  for (int v = 0; v < 3; ++v) step[3 * v] = 2.5;
+  ContactPairFinder finder;
+  std::vector<ContactPair> pairs;
+  ASSERT_TRUE(finder.gather(scene.geometry, scene.cloth, &step, 1.0, std::nullopt, pairs));
+  std::vector<double> distance2;
+  for (const ContactPair& pair : pairs) {
+    std::array<Vec3, 4> p;
+    for (int i = 0; i < 4; ++i) {
+      const int v = pair.vertices[i];
+      p[i] = v < 3 ? Vec3(scene.cloth.segment<3>(3 * v))
+                   : Vec3(scene.geometry.obstacle_positions.segment<3>(3 * (v - 3)));
+    }
+    distance2.push_back(contact_distance_squared(pair, p, 0.0));
+  }
+  const auto bound = [&](const Eigen::VectorXd& move, const std::vector<double>* floors) {
+    return earliest_contact(scene.geometry, pairs, scene.cloth, move, 0.0, 0.5, 0.5, nullptr, {},
+                            floors);
+  };
+  // The long pass comes within the reach: CCD bounds it, with the distances known or not.
+  const double walked = bound(step, nullptr);
+  EXPECT_LT(walked, 0.9);
+  EXPECT_EQ(bound(step, &distance2), walked);
+  // 0.8 m toward the obstacle, whose nearest point is about 1.9 m away: under half of that.
+  const Eigen::VectorXd short_move = 0.32 * step;
+  EXPECT_EQ(bound(short_move, &distance2), 1.0);
+  EXPECT_EQ(bound(short_move, nullptr), 1.0);
+  // The floors decide: told every pair starts 100 m apart, the long pass is not checked.
+  const std::vector<double> far(pairs.size(), 100.0 * 100.0);
+  EXPECT_EQ(bound(step, &far), 1.0);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "contact_candidates.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "../stacked_vectors.h"
@@ -127,7 +128,7 @@ Result<void> ContactPairFinder::gather(const ContactGeometry& g, const Eigen::Ve
 double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>& pairs,
                         const Eigen::VectorXd& x, const Eigen::VectorXd& step, double ground,
                         double reach, double min_separation, const Eigen::VectorXd* obstacle_step,
-                        AdditiveCcdSettings settings) {
+                        AdditiveCcdSettings settings, const std::vector<double>* distance_floor2) {
   const int n = g.cloth_vertices();
   const auto start_of = [&](int v) { return v < n ? at(x, v) : at(g.obstacle_positions, v - n); };
   const auto move_of = [&](int v) {
@@ -136,7 +137,8 @@ double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>
   };
   settings.separation_fraction = min_separation;
   double bound = 1.0;
-  for (const ContactPair& pair : pairs) {
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const ContactPair& pair = pairs[k];
     if (pair.kind == ContactKind::ground) {
       // Exact for a plane: the height is linear in t; keep (1 - s) of the gap's closing.
       const int v = pair.vertices[0];
@@ -156,6 +158,20 @@ double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>
     // sets hold many such pairs (gather_region.h: complete for a region larger than one
     // step), and Additive CCD would spend two distance evaluations on each to find it.
     if (!moves || contact_box_gap(pair, start, end) > reach) continue;
+    if (distance_floor2 != nullptr) {
+      // A point of a primitive moves no farther than the farthest of its vertices, so the
+      // distance falls by at most the two primitives' largest moves together: if that keeps
+      // (1 - s) of the gap at x, the pair keeps s of it over the whole step, which Additive
+      // CCD would find only after measuring the distances at both ends.
+      const int second = pair.kind == ContactKind::point_triangle ? 1 : 2;
+      double move[2] = {0.0, 0.0};
+      for (int i = 0; i < 4; ++i) {
+        double& primitive = move[i < second ? 0 : 1];
+        primitive = std::max(primitive, (end[i] - start[i]).norm());
+      }
+      const double gap = std::sqrt((*distance_floor2)[k]) - settings.thickness;
+      if (move[0] + move[1] <= (1.0 - min_separation) * gap) continue;
+    }
     settings.max_time = bound;  // nothing past the bound found so far matters
     const auto hit = pair.kind == ContactKind::point_triangle
                          ? point_triangle_ccd(start, end, settings)

@@ -73,11 +73,14 @@ class ContactPairFinder {
 /// with nullptr. A pair whose two primitives' swept boxes stay more than `reach` apart is
 /// passed over, as the broad phase would not have listed it for this move. `settings` says how
 /// pairs are walked (AdditiveCcdSettings::along_separation); its separation fraction and end
-/// are this function's.
+/// are this function's. `distance_floor2`, when given, holds per pair a lower bound of its
+/// squared distance at x: a pair whose vertices all move too little to take it below
+/// `min_separation` of that is passed over without CCD.
 double earliest_contact(const ContactGeometry& geometry, const std::vector<ContactPair>& pairs,
                         const Eigen::VectorXd& x, const Eigen::VectorXd& step, double ground,
                         double reach, double min_separation,
                         const Eigen::VectorXd* obstacle_step = nullptr,
-                        AdditiveCcdSettings settings = {});
+                        AdditiveCcdSettings settings = {},
+                        const std::vector<double>* distance_floor2 = nullptr);
 
 }  // namespace animkit

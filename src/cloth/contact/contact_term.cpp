@@ -103,6 +103,7 @@ struct ContactTerm::Impl {
   // x or step finds none, and leaves no region.
   bool gather(const Eigen::VectorXd& x, const Eigen::VectorXd* step) {
     ++gathers;
+    at.valid = false;
     region.set(x, step, GatherRegion::kFloorFraction * settings.thickness,
                geometry.obstacle_positions);
     if (!finder.gather(geometry, region.lower(), &region.extent(), settings.thickness, ground,
@@ -120,15 +121,20 @@ struct ContactTerm::Impl {
   // triangle's box holds much of a finely tessellated collider that stays centimetres away:
   // on a ball at 100 m/s meeting a 5 x 5 sheet, most gathered pairs. What is left is what the
   // barrier, CCD and the line search then go over at every iteration.
+  // The distances it measures at x are the kept pairs' entry in `at`.
   mutable std::vector<char> pair_kept;
   void keep_reachable(const Eigen::VectorXd& x) {
     const int n = model->particle_count();
     const double within = std::sqrt(barrier.dhat()) * (1.0 + 1e-6);
     pair_kept.resize(pairs.size());
+    at.distance2.resize(pairs.size());
     parallel::for_each_weighted(static_cast<int>(pairs.size()), kActiveTestWeight, [&](int k) {
       const ContactPair& pair = pairs[static_cast<std::size_t>(k)];
       char& kept = pair_kept[static_cast<std::size_t>(k)];
+      double& distance2 = at.distance2[static_cast<std::size_t>(k)];
+      const std::array<Vec3, 4> p = positions(x, pair);
       if (pair.kind == ContactKind::ground) {
+        distance2 = contact_distance_squared(pair, p, ground_height());
         kept = 1;
         return;
       }
@@ -140,15 +146,75 @@ struct ContactTerm::Impl {
         if (v < n) primitive = std::max(primitive, region.reach(v));
       }
       const double limit = within + reach[0] + reach[1];
-      const std::array<Vec3, 4> p = positions(x, pair);
       kept = contact_box_gap(pair, p, p) <= limit &&
-             contact_distance_squared(pair, p, ground_height()) < limit * limit;
+             (distance2 = contact_distance_squared(pair, p, ground_height())) < limit * limit;
     });
     std::size_t count = 0;
     for (std::size_t k = 0; k < pairs.size(); ++k) {
-      if (pair_kept[k]) pairs[count++] = pairs[k];
+      if (!pair_kept[k]) continue;
+      pairs[count] = pairs[k];
+      at.distance2[count++] = at.distance2[k];
     }
     pairs.resize(count);
+    at.distance2.resize(count);
+    at.x = x;
+    at.obstacles = geometry.obstacle_positions;
+    at.barrier.clear();
+    at.valid = true;
+  }
+
+  // Per gathered pair at one configuration (x, with the obstacles where they are): its squared
+  // distance where its primitives' boxes lie within dhat (or wherever it was measured), else
+  // their boxes' gap squared (a lower bound, beyond dhat), and its barrier once a line search
+  // asks for it. Either way a pair is within dhat exactly when its entry is below dhat:
+  // contact_beyond's margin puts the distance of a pair it passes over at dhat or more. A Newton
+  // iteration asks at one x for the active pairs twice (gradient, Hessian), then for CCD's
+  // starting distances, the line search's barriers at x and the stopping test's gaps.
+  struct PairsAt {
+    bool valid = false;
+    Eigen::VectorXd x, obstacles;
+    std::vector<double> distance2;
+    std::vector<double> barrier;  // empty until difference() asks at this x
+  };
+  mutable PairsAt at;
+
+  const std::vector<double>& distances_at(const Eigen::VectorXd& x) const {
+    if (at.valid && at.x.size() == x.size() && at.x == x &&
+        at.obstacles == geometry.obstacle_positions) {
+      return at.distance2;
+    }
+    at.valid = true;
+    at.x = x;
+    at.obstacles = geometry.obstacle_positions;
+    at.barrier.clear();
+    at.distance2.resize(pairs.size());
+    parallel::for_each_weighted(static_cast<int>(pairs.size()), kActiveTestWeight, [&](int k) {
+      const ContactPair& pair = pairs[static_cast<std::size_t>(k)];
+      const std::array<Vec3, 4> p = positions(x, pair);
+      double& d2 = at.distance2[static_cast<std::size_t>(k)];
+      if (contact_beyond(pair, p, barrier.dhat())) {
+        const double gap = contact_box_gap(pair, p, p);
+        d2 = gap * gap;
+      } else {
+        d2 = contact_distance_squared(pair, p, ground_height());
+      }
+    });
+    return at.distance2;
+  }
+
+  const std::vector<double>& barriers_at(const Eigen::VectorXd& x) const {
+    distances_at(x);
+    if (at.barrier.empty() && !pairs.empty()) {
+      at.barrier.resize(pairs.size());
+      parallel::for_each_weighted(static_cast<int>(pairs.size()), kActiveTestWeight, [&](int k) {
+        const auto pair = static_cast<std::size_t>(k);
+        at.barrier[pair] = at.distance2[pair] < barrier.dhat()
+                               ? contact_barrier(pairs[pair], positions(x, pairs[pair]),
+                                                 ground_height(), barrier)
+                               : 0.0;
+      });
+    }
+    return at.barrier;
   }
 
   // The pairs within dhat at x (indices into `pairs`, in their order), then per active pair
@@ -157,34 +223,23 @@ struct ContactTerm::Impl {
   // depend on the thread count). Only the active pairs get slots: along a fast collider's move
   // the gathered set can hold tens of thousands of pairs of which a few dozen are within dhat,
   // and a 12 x 12 slot for each of them cost more in memory traffic than the derivatives.
-  mutable std::vector<char> pair_active;  // per gathered pair: active at x
   mutable std::vector<int> active_pairs;
   mutable std::vector<Eigen::Matrix<double, 12, 1>> pair_gradients;
   mutable std::vector<Eigen::Matrix<double, 12, 12>> pair_hessians;
 
-  // Within dhat at p: the pair's barrier and its derivatives are not zero.
-  bool active(const ContactPair& pair, const std::array<Vec3, 4>& p) const {
-    return !contact_beyond(pair, p, barrier.dhat()) &&
-           contact_distance_squared(pair, p, ground_height()) < barrier.dhat();
-  }
-
   // BarrierHessian::adaptive: a pair closer than kCollapsedGapFraction of the thickness takes
   // the projected exact Hessian whatever the substep's mode (contact.h).
-  bool collapsed(const ContactPair& pair, const std::array<Vec3, 4>& p) const {
+  bool collapsed(double distance2) const {
     return settings.hessian == BarrierHessian::adaptive &&
-           contact_distance_squared(pair, p, ground_height()) <
-               kCollapsedGapFraction * kCollapsedGapFraction * barrier.dhat();
+           distance2 < kCollapsedGapFraction * kCollapsedGapFraction * barrier.dhat();
   }
 
+  // Within dhat at x: the pair's barrier and its derivatives are not zero.
   void find_active(const Eigen::VectorXd& x) const {
-    pair_active.resize(pairs.size());
-    parallel::for_each_weighted(static_cast<int>(pairs.size()), kActiveTestWeight, [&](int k) {
-      const ContactPair& pair = pairs[static_cast<std::size_t>(k)];
-      pair_active[static_cast<std::size_t>(k)] = active(pair, positions(x, pair));
-    });
+    const std::vector<double>& distance2 = distances_at(x);
     active_pairs.clear();
     for (std::size_t k = 0; k < pairs.size(); ++k) {
-      if (pair_active[k]) active_pairs.push_back(static_cast<int>(k));
+      if (distance2[k] < barrier.dhat()) active_pairs.push_back(static_cast<int>(k));
     }
   }
 
@@ -202,10 +257,11 @@ struct ContactTerm::Impl {
     find_active(x);
     pair_hessians.resize(active_pairs.size());
     parallel::for_each_weighted(static_cast<int>(active_pairs.size()), kPairWeight, [&](int a) {
-      const ContactPair& pair = pairs[static_cast<std::size_t>(active_pairs[a])];
+      const auto k = static_cast<std::size_t>(active_pairs[a]);
+      const ContactPair& pair = pairs[k];
       const std::array<Vec3, 4> p = positions(x, pair);
       pair_hessians[static_cast<std::size_t>(a)] =
-          !exact_hessian && !collapsed(pair, p)
+          !exact_hessian && !collapsed(at.distance2[k])
               ? contact_barrier_gauss_newton_hessian(pair, p, ground_height(), barrier)
               : contact_barrier_derivatives(pair, p, ground_height(), barrier).hessian;
     });
@@ -333,6 +389,7 @@ void ContactTerm::advance(Eigen::VectorXd& x) {
   // as CCD allows (moving_obstacles.h), then stay there for this iteration's line search. The
   // move gathers its own pairs into `pairs`: update() gathers again.
   if (!impl_->moving.settled()) impl_->region.clear();
+  impl_->at.valid = false;  // and with them their distances
   impl_->moving.advance(impl_->geometry, impl_->finder, impl_->model->pinned, impl_->ground,
                         impl_->settings.thickness, impl_->settings.min_separation, x, impl_->pairs);
 }
@@ -351,9 +408,9 @@ double ContactTerm::max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& st
       !impl_->region.covers_step(x, step)) {
     if (!impl_->gather(x, &step)) return 0.0;  // a non-finite step: take none of it
   }
-  const double bound =
-      earliest_contact(impl_->geometry, impl_->pairs, x, step, impl_->ground_height(),
-                       impl_->settings.thickness, impl_->settings.min_separation);
+  const double bound = earliest_contact(
+      impl_->geometry, impl_->pairs, x, step, impl_->ground_height(), impl_->settings.thickness,
+      impl_->settings.min_separation, nullptr, {}, &impl_->distances_at(x));
   if (impl_->settings.hessian == BarrierHessian::adaptive && bound < kFrozenStepFraction)
     impl_->exact_hessian = true;
   return bound;
@@ -371,13 +428,14 @@ double ContactTerm::difference(const Eigen::VectorXd& x, const Eigen::VectorXd& 
   // Pair by pair, so a large barrier elsewhere does not swamp a small change.
   Eigen::VectorXd& moved = impl_->moved;
   moved = x + step;  // sized once: the line search calls this every trial
+  const std::vector<double>& before = impl_->barriers_at(x);
   double sum = 0.0;
-  for (const ContactPair& pair : impl_->pairs) {
+  for (std::size_t k = 0; k < impl_->pairs.size(); ++k) {
+    const ContactPair& pair = impl_->pairs[k];
     const double after = contact_barrier(pair, impl_->positions(moved, pair),
                                          impl_->ground_height(), impl_->barrier);
     if (!std::isfinite(after)) return std::numeric_limits<double>::infinity();
-    sum += after -
-           contact_barrier(pair, impl_->positions(x, pair), impl_->ground_height(), impl_->barrier);
+    sum += after - before[k];
   }
   return impl_->kappa * sum;
 }
@@ -474,17 +532,17 @@ Result<void> ContactTerm::check_start(const Eigen::VectorXd& x) const {
 bool ContactTerm::gaps_settled(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const {
   const Impl& m = *impl_;
   const int n = m.model->particle_count();
-  return std::all_of(m.pairs.begin(), m.pairs.end(), [&](const ContactPair& pair) {
-    const std::array<Vec3, 4> p = m.positions(x, pair);
-    if (contact_beyond(pair, p, m.barrier.dhat())) return true;
-    const double d = contact_distance_squared(pair, p, m.ground_height());
-    if (d >= m.barrier.dhat()) return true;
+  const std::vector<double>& distance2 = m.distances_at(x);
+  for (std::size_t k = 0; k < m.pairs.size(); ++k) {
+    if (distance2[k] >= m.barrier.dhat()) continue;
+    const ContactPair& pair = m.pairs[k];
     double move = 0.0;  // the obstacles' vertices follow their motions, not dx
     for (int i = 0; i < pair.vertex_count(); ++i) {
       if (pair.vertices[i] < n) move = std::max(move, dx.segment<3>(3 * pair.vertices[i]).norm());
     }
-    return move <= kSettledGapFraction * std::sqrt(d);
-  });
+    if (move > kSettledGapFraction * std::sqrt(distance2[k])) return false;
+  }
+  return true;
 }
 
 ContactStats ContactTerm::stats(const Eigen::VectorXd& x) const {
