@@ -249,18 +249,21 @@ const SmoothedAggregation::Matrix* SmoothedAggregation::couplings(const Level& l
   return options_.coarse_couplings ? &level.coupling.full() : nullptr;
 }
 
-void SmoothedAggregation::forward_sweep(Level& level) {
+void SmoothedAggregation::forward_sweep(Level& level, bool from_zero) {
   const Matrix& a = level.a;
   const Matrix* e = couplings(level);
   for (int i = 0; i < a.block_rows; ++i) {
+    const int end = from_zero ? i : a.block_rows;  // columns from `end` on hold zeros
     Eigen::Vector3d sum = level.b.segment<3>(3 * i);
     for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
-      if (k != level.diagonal[i])
+      if (k != level.diagonal[i] && a.column[k] < end)
         sum.noalias() -= a.values[k] * level.x.segment<3>(3 * a.column[k]);
     }
     if (e != nullptr) {
-      for (int k = e->row_start[i]; k < e->row_start[i + 1]; ++k)
-        sum.noalias() -= e->values[k] * level.x.segment<3>(3 * e->column[k]);
+      for (int k = e->row_start[i]; k < e->row_start[i + 1]; ++k) {
+        if (e->column[k] < end)
+          sum.noalias() -= e->values[k] * level.x.segment<3>(3 * e->column[k]);
+      }
     }
     level.x.segment<3>(3 * i).noalias() = level.inverse_diagonal[i] * sum;
   }
@@ -291,7 +294,7 @@ void SmoothedAggregation::cycle(std::size_t l) {
     return;
   }
   level.x.setZero();
-  for (int s = 0; s < options_.smoothing_sweeps; ++s) forward_sweep(level);
+  for (int s = 0; s < options_.smoothing_sweeps; ++s) forward_sweep(level, s == 0);
   level.a.multiply(level.x, level.r);
   if (const Matrix* e = couplings(level)) e->multiply_add(level.x, level.r);
   level.r = level.b - level.r;

@@ -78,7 +78,9 @@ class SmoothedAggregation {
   bool factorize_coarsest();
   // The level's couplings the V-cycle uses (MultigridOptions::coarse_couplings), or none.
   const Matrix* couplings(const Level& level) const;
-  void forward_sweep(Level& level);
+  // from_zero: level.x is zero, so only the columns before each row carry values (the later
+  // ones are still zero and would add nothing): half the products of a sweep.
+  void forward_sweep(Level& level, bool from_zero);
   void backward_sweep(Level& level);
   void cycle(std::size_t l);
 
