@@ -24,15 +24,16 @@ StencilDerivatives<4> edge_edge_mollifier_derivatives(const Vec3& a0, const Vec3
                                                       const Vec3& b0, const Vec3& b1,
                                                       double eps_x) {
   assert(eps_x > 0.0 && "the mollifier threshold must be positive");
+  StencilDerivatives<4> out;
+  // Most edge pairs are far from parallel, where m = 1: their c alone, not its Hessian.
+  if ((a1 - a0).cross(b1 - b0).squaredNorm() >= eps_x) {
+    out.value = 1.0;
+    return out;
+  }
   double c = 0.0;
   collision_detail::ReducedVector<2> grad_c;
   collision_detail::ReducedMatrix<2> hess_c;
   collision_detail::cross_squared_derivatives(a1 - a0, b1 - b0, c, grad_c, hess_c);
-  StencilDerivatives<4> out;
-  if (c >= eps_x) {
-    out.value = 1.0;
-    return out;
-  }
   const double x = c / eps_x;
   const double first = 2.0 * (1.0 - x) / eps_x;  // m'(c)
   const double second = -2.0 / (eps_x * eps_x);  // m''(c)
