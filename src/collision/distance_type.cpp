@@ -10,19 +10,108 @@ namespace {
 
 // Places the derivatives of a formula over some of a stencil's vertices into the whole
 // stencil's: sub vertex i is stencil vertex index[i]; the other rows and columns stay zero.
-template <int Sub, int Full>
-StencilDerivatives<Full> scatter(const StencilDerivatives<Sub>& sub,
-                                 const std::array<int, Sub>& index) {
-  StencilDerivatives<Full> out;
+// Stencil is StencilDerivatives or StencilGradient (no Hessian to place).
+template <int Full, template <int> class Stencil, int Sub>
+Stencil<Full> scatter(const Stencil<Sub>& sub, const std::array<int, Sub>& index) {
+  Stencil<Full> out;
   out.value = sub.value;
   for (int i = 0; i < Sub; ++i) {
     out.gradient.template segment<3>(3 * index[i]) = sub.gradient.template segment<3>(3 * i);
-    for (int j = 0; j < Sub; ++j) {
-      out.hessian.template block<3, 3>(3 * index[i], 3 * index[j]) =
-          sub.hessian.template block<3, 3>(3 * i, 3 * j);
+    if constexpr (requires { sub.hessian; }) {
+      for (int j = 0; j < Sub; ++j) {
+        out.hessian.template block<3, 3>(3 * index[i], 3 * index[j]) =
+            sub.hessian.template block<3, 3>(3 * i, 3 * j);
+      }
     }
   }
   return out;
+}
+
+// The smooth formulas with their whole derivatives, or with their gradients alone.
+struct WithHessian {
+  template <int V>
+  using Stencil = StencilDerivatives<V>;
+  static Stencil<2> point_point(const Vec3& p, const Vec3& q) {
+    return point_point_distance_squared_derivatives(p, q);
+  }
+  static Stencil<3> point_line(const Vec3& p, const Vec3& a, const Vec3& b) {
+    return point_line_distance_squared_derivatives(p, a, b);
+  }
+  static Stencil<4> point_plane(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    return point_plane_distance_squared_derivatives(p, a, b, c);
+  }
+  static Stencil<4> line_line(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1) {
+    return line_line_distance_squared_derivatives(a0, a1, b0, b1);
+  }
+};
+struct GradientOnly {
+  template <int V>
+  using Stencil = StencilGradient<V>;
+  static Stencil<2> point_point(const Vec3& p, const Vec3& q) {
+    return point_point_distance_squared_gradient(p, q);
+  }
+  static Stencil<3> point_line(const Vec3& p, const Vec3& a, const Vec3& b) {
+    return point_line_distance_squared_gradient(p, a, b);
+  }
+  static Stencil<4> point_plane(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    return point_plane_distance_squared_gradient(p, a, b, c);
+  }
+  static Stencil<4> line_line(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1) {
+    return line_line_distance_squared_gradient(a0, a1, b0, b1);
+  }
+};
+
+template <class F>
+typename F::template Stencil<4> point_triangle_formula(const Vec3& p, const Vec3& a,
+                                                        const Vec3& b, const Vec3& c,
+                                                        PointTriangleDistanceType type) {
+  using T = PointTriangleDistanceType;
+  switch (type) {
+    case T::kPointA:
+      return scatter<4>(F::point_point(p, a), {0, 1});
+    case T::kPointB:
+      return scatter<4>(F::point_point(p, b), {0, 2});
+    case T::kPointC:
+      return scatter<4>(F::point_point(p, c), {0, 3});
+    case T::kEdgeAB:
+      return scatter<4>(F::point_line(p, a, b), {0, 1, 2});
+    case T::kEdgeBC:
+      return scatter<4>(F::point_line(p, b, c), {0, 2, 3});
+    case T::kEdgeCA:
+      return scatter<4>(F::point_line(p, c, a), {0, 3, 1});
+    case T::kInterior:
+      return F::point_plane(p, a, b, c);
+  }
+  assert(false && "unknown point-triangle distance type");
+  return {};
+}
+
+template <class F>
+typename F::template Stencil<4> edge_edge_formula(const Vec3& a0, const Vec3& a1, const Vec3& b0,
+                                                   const Vec3& b1, EdgeEdgeDistanceType type) {
+  using T = EdgeEdgeDistanceType;
+  switch (type) {
+    case T::kA0B0:
+      return scatter<4>(F::point_point(a0, b0), {0, 2});
+    case T::kA0B1:
+      return scatter<4>(F::point_point(a0, b1), {0, 3});
+    case T::kA1B0:
+      return scatter<4>(F::point_point(a1, b0), {1, 2});
+    case T::kA1B1:
+      return scatter<4>(F::point_point(a1, b1), {1, 3});
+    case T::kA0EdgeB:
+      return scatter<4>(F::point_line(a0, b0, b1), {0, 2, 3});
+    case T::kA1EdgeB:
+      return scatter<4>(F::point_line(a1, b0, b1), {1, 2, 3});
+    case T::kB0EdgeA:
+      return scatter<4>(F::point_line(b0, a0, a1), {2, 0, 1});
+    case T::kB1EdgeA:
+      return scatter<4>(F::point_line(b1, a0, a1), {3, 0, 1});
+    case T::kInterior:
+      return F::line_line(a0, a1, b0, b1);
+  }
+  assert(false && "unknown edge-edge distance type");
+  return {};
 }
 
 double clamp01(double x) {
@@ -145,9 +234,9 @@ StencilDerivatives<3> point_edge_distance_squared_derivatives(const Vec3& p, con
                                                               PointEdgeDistanceType type) {
   switch (type) {
     case PointEdgeDistanceType::kPointA:
-      return scatter<2, 3>(point_point_distance_squared_derivatives(p, a), {0, 1});
+      return scatter<3>(point_point_distance_squared_derivatives(p, a), {0, 1});
     case PointEdgeDistanceType::kPointB:
-      return scatter<2, 3>(point_point_distance_squared_derivatives(p, b), {0, 2});
+      return scatter<3>(point_point_distance_squared_derivatives(p, b), {0, 2});
     case PointEdgeDistanceType::kInterior:
       return point_line_distance_squared_derivatives(p, a, b);
   }
@@ -181,25 +270,13 @@ double point_triangle_distance_squared(const Vec3& p, const Vec3& a, const Vec3&
 StencilDerivatives<4> point_triangle_distance_squared_derivatives(const Vec3& p, const Vec3& a,
                                                                   const Vec3& b, const Vec3& c,
                                                                   PointTriangleDistanceType type) {
-  using T = PointTriangleDistanceType;
-  switch (type) {
-    case T::kPointA:
-      return scatter<2, 4>(point_point_distance_squared_derivatives(p, a), {0, 1});
-    case T::kPointB:
-      return scatter<2, 4>(point_point_distance_squared_derivatives(p, b), {0, 2});
-    case T::kPointC:
-      return scatter<2, 4>(point_point_distance_squared_derivatives(p, c), {0, 3});
-    case T::kEdgeAB:
-      return scatter<3, 4>(point_line_distance_squared_derivatives(p, a, b), {0, 1, 2});
-    case T::kEdgeBC:
-      return scatter<3, 4>(point_line_distance_squared_derivatives(p, b, c), {0, 2, 3});
-    case T::kEdgeCA:
-      return scatter<3, 4>(point_line_distance_squared_derivatives(p, c, a), {0, 3, 1});
-    case T::kInterior:
-      return point_plane_distance_squared_derivatives(p, a, b, c);
-  }
-  assert(false && "unknown point-triangle distance type");
-  return {};
+  return point_triangle_formula<WithHessian>(p, a, b, c, type);
+}
+
+StencilGradient<4> point_triangle_distance_squared_gradient(const Vec3& p, const Vec3& a,
+                                                            const Vec3& b, const Vec3& c,
+                                                            PointTriangleDistanceType type) {
+  return point_triangle_formula<GradientOnly>(p, a, b, c, type);
 }
 
 double edge_edge_distance_squared(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1,
@@ -232,29 +309,13 @@ double edge_edge_distance_squared(const Vec3& a0, const Vec3& a1, const Vec3& b0
 StencilDerivatives<4> edge_edge_distance_squared_derivatives(const Vec3& a0, const Vec3& a1,
                                                              const Vec3& b0, const Vec3& b1,
                                                              EdgeEdgeDistanceType type) {
-  using T = EdgeEdgeDistanceType;
-  switch (type) {
-    case T::kA0B0:
-      return scatter<2, 4>(point_point_distance_squared_derivatives(a0, b0), {0, 2});
-    case T::kA0B1:
-      return scatter<2, 4>(point_point_distance_squared_derivatives(a0, b1), {0, 3});
-    case T::kA1B0:
-      return scatter<2, 4>(point_point_distance_squared_derivatives(a1, b0), {1, 2});
-    case T::kA1B1:
-      return scatter<2, 4>(point_point_distance_squared_derivatives(a1, b1), {1, 3});
-    case T::kA0EdgeB:
-      return scatter<3, 4>(point_line_distance_squared_derivatives(a0, b0, b1), {0, 2, 3});
-    case T::kA1EdgeB:
-      return scatter<3, 4>(point_line_distance_squared_derivatives(a1, b0, b1), {1, 2, 3});
-    case T::kB0EdgeA:
-      return scatter<3, 4>(point_line_distance_squared_derivatives(b0, a0, a1), {2, 0, 1});
-    case T::kB1EdgeA:
-      return scatter<3, 4>(point_line_distance_squared_derivatives(b1, a0, a1), {3, 0, 1});
-    case T::kInterior:
-      return line_line_distance_squared_derivatives(a0, a1, b0, b1);
-  }
-  assert(false && "unknown edge-edge distance type");
-  return {};
+  return edge_edge_formula<WithHessian>(a0, a1, b0, b1, type);
+}
+
+StencilGradient<4> edge_edge_distance_squared_gradient(const Vec3& a0, const Vec3& a1,
+                                                       const Vec3& b0, const Vec3& b1,
+                                                       EdgeEdgeDistanceType type) {
+  return edge_edge_formula<GradientOnly>(a0, a1, b0, b1, type);
 }
 
 }  // namespace animkit

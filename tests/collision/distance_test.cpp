@@ -133,6 +133,46 @@ TEST(Distance, ClassifiedDerivativesMatchFiniteDifferencesForEveryType) {
   for (int hits : edge_hits) EXPECT_GT(hits, 0);
 }
 
+// The gradient-only functions give the full derivatives' value and gradient: for every
+// classified type, and for each smooth formula. (The same formulas, compiled apart: equal up to
+// the rounding of fused multiply-adds.)
+template <int V>
+void expect_same_gradient(const StencilGradient<V>& alone, const StencilDerivatives<V>& full) {
+  const double scale = 1.0 + std::abs(full.value) + full.gradient.norm();
+  EXPECT_NEAR(alone.value, full.value, 1e-14 * scale);
+  EXPECT_LE((alone.gradient - full.gradient).norm(), 1e-14 * scale);
+}
+
+TEST(Distance, GradientsAloneAreTheFullDerivativesGradients) {
+  RandomPoints random(8);
+  std::array<int, 7> triangle_hits{};
+  std::array<int, 9> edge_hits{};
+  for (int trial = 0; trial < 3000; ++trial) {
+    Points<4> x = random.points<4>();
+    x[0] *= 2.0;
+    const auto triangle = point_triangle_distance_type(x[0], x[1], x[2], x[3]);
+    ++triangle_hits[static_cast<int>(triangle)];
+    expect_same_gradient<4>(
+        point_triangle_distance_squared_gradient(x[0], x[1], x[2], x[3], triangle),
+        point_triangle_distance_squared_derivatives(x[0], x[1], x[2], x[3], triangle));
+    const auto edges = edge_edge_distance_type(x[0], x[1], x[2], x[3]);
+    ++edge_hits[static_cast<int>(edges)];
+    expect_same_gradient<4>(edge_edge_distance_squared_gradient(x[0], x[1], x[2], x[3], edges),
+                            edge_edge_distance_squared_derivatives(x[0], x[1], x[2], x[3], edges));
+  }
+  for (int hits : triangle_hits) EXPECT_GT(hits, 0);
+  for (int hits : edge_hits) EXPECT_GT(hits, 0);
+  const Points<4> y = random.points<4>();
+  expect_same_gradient<2>(point_point_distance_squared_gradient(y[0], y[1]),
+                          point_point_distance_squared_derivatives(y[0], y[1]));
+  expect_same_gradient<3>(point_line_distance_squared_gradient(y[0], y[1], y[2]),
+                          point_line_distance_squared_derivatives(y[0], y[1], y[2]));
+  expect_same_gradient<4>(point_plane_distance_squared_gradient(y[0], y[1], y[2], y[3]),
+                          point_plane_distance_squared_derivatives(y[0], y[1], y[2], y[3]));
+  expect_same_gradient<4>(line_line_distance_squared_gradient(y[0], y[1], y[2], y[3]),
+                          line_line_distance_squared_derivatives(y[0], y[1], y[2], y[3]));
+}
+
 // Brute force: the minimum over a fine sampling of the primitives. The sampled minimum is an
 // upper bound of the true one and within `resolution` of it in distance (not squared).
 // `slack` allows the parallel fallback's own error (of order |u| |v| sin(angle) <= 1e-11 here).

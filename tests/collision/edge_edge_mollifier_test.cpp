@@ -36,6 +36,19 @@ TEST(EdgeEdgeMollifier, DerivativesMatchFiniteDifferencesBelowTheThreshold) {
   EXPECT_GT(below, 150);
 }
 
+TEST(EdgeEdgeMollifier, TheGradientAloneIsTheFullDerivativesGradient) {
+  RandomPoints random(22);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Points<4> x = nearly_parallel(random, trial % 2 == 0 ? 0.05 : 1.0);
+    const double c = (x[1] - x[0]).cross(x[3] - x[2]).squaredNorm();
+    const double eps_x = (c + 1e-12) * random.uniform(0.5, 5.0);  // m < 1 and m = 1 both
+    const auto full = edge_edge_mollifier_derivatives(x[0], x[1], x[2], x[3], eps_x);
+    const auto alone = edge_edge_mollifier_gradient(x[0], x[1], x[2], x[3], eps_x);
+    EXPECT_NEAR(alone.value, full.value, 1e-14);
+    EXPECT_LE((alone.gradient - full.gradient).norm(), 1e-14 * (1.0 + full.gradient.norm()));
+  }
+}
+
 TEST(EdgeEdgeMollifier, IsOneAboveTheThresholdAndVanishesForParallelEdges) {
   const Vec3 a0(0, 0, 0), a1(1, 0, 0), b0(0, 1, 0);
   const double eps_x = edge_edge_mollifier_threshold(a0, a1, b0, Vec3(0, 1, 1));

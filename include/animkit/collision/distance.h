@@ -34,16 +34,32 @@ struct StencilDerivatives {
   Eigen::Matrix<double, kDofs, kDofs> hessian = Eigen::Matrix<double, kDofs, kDofs>::Zero();
 };
 
+/// A function of `Vertices` stacked 3D points and its gradient alone (as StencilDerivatives,
+/// without the Hessian): for the barrier's gradient and its Gauss-Newton Hessian, which need no
+/// second derivatives of the distance. The same numbers as the matching *_derivatives.
+template <int Vertices>
+struct StencilGradient {
+  static constexpr int kDofs = 3 * Vertices;  ///< number of coordinates: 3 per vertex
+  double value = 0.0;                         ///< the function's value
+  /// First derivatives with respect to the kDofs coordinates.
+  Eigen::Matrix<double, kDofs, 1> gradient = Eigen::Matrix<double, kDofs, 1>::Zero();
+};
+
 /// |p - q|^2.
 double point_point_distance_squared(const Vec3& p, const Vec3& q);
 /// |p - q|^2 and its derivatives in (p, q).
 StencilDerivatives<2> point_point_distance_squared_derivatives(const Vec3& p, const Vec3& q);
+/// Its value and gradient alone.
+StencilGradient<2> point_point_distance_squared_gradient(const Vec3& p, const Vec3& q);
 
 /// Squared distance from p to the infinite line through a and b. Requires a != b.
 double point_line_distance_squared(const Vec3& p, const Vec3& a, const Vec3& b);
 /// The same and its derivatives in (p, a, b). Requires a != b.
 StencilDerivatives<3> point_line_distance_squared_derivatives(const Vec3& p, const Vec3& a,
                                                               const Vec3& b);
+/// Its value and gradient alone.
+StencilGradient<3> point_line_distance_squared_gradient(
+    const Vec3& p, const Vec3& a, const Vec3& b);
 
 /// Squared distance from p to the plane through a, b, c. Requires a non-degenerate triangle
 /// ((b - a) x (c - a) != 0).
@@ -51,6 +67,9 @@ double point_plane_distance_squared(const Vec3& p, const Vec3& a, const Vec3& b,
 /// The same and its derivatives in (p, a, b, c).
 StencilDerivatives<4> point_plane_distance_squared_derivatives(const Vec3& p, const Vec3& a,
                                                                const Vec3& b, const Vec3& c);
+/// Its value and gradient alone.
+StencilGradient<4> point_plane_distance_squared_gradient(
+    const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 /// Squared distance between the infinite line through a0, a1 and the one through b0, b1.
 /// Requires non-parallel lines ((a1 - a0) x (b1 - b0) != 0).
@@ -58,5 +77,8 @@ double line_line_distance_squared(const Vec3& a0, const Vec3& a1, const Vec3& b0
 /// The same and its derivatives in (a0, a1, b0, b1).
 StencilDerivatives<4> line_line_distance_squared_derivatives(const Vec3& a0, const Vec3& a1,
                                                              const Vec3& b0, const Vec3& b1);
+/// Its value and gradient alone.
+StencilGradient<4> line_line_distance_squared_gradient(
+    const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1);
 
 }  // namespace animkit

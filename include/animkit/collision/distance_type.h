@@ -74,6 +74,10 @@ double point_triangle_distance_squared(const Vec3& p, const Vec3& a, const Vec3&
 StencilDerivatives<4> point_triangle_distance_squared_derivatives(const Vec3& p, const Vec3& a,
                                                                   const Vec3& b, const Vec3& c,
                                                                   PointTriangleDistanceType type);
+/// Its value and gradient alone (the same numbers).
+StencilGradient<4> point_triangle_distance_squared_gradient(const Vec3& p, const Vec3& a,
+                                                            const Vec3& b, const Vec3& c,
+                                                            PointTriangleDistanceType type);
 
 /// Squared distance between segments (a0, a1) and (b0, b1) by the formula of `type`.
 double edge_edge_distance_squared(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1,
@@ -82,6 +86,10 @@ double edge_edge_distance_squared(const Vec3& a0, const Vec3& a1, const Vec3& b0
 StencilDerivatives<4> edge_edge_distance_squared_derivatives(const Vec3& a0, const Vec3& a1,
                                                              const Vec3& b0, const Vec3& b1,
                                                              EdgeEdgeDistanceType type);
+/// Its value and gradient alone (the same numbers).
+StencilGradient<4> edge_edge_distance_squared_gradient(const Vec3& a0, const Vec3& a1,
+                                                       const Vec3& b0, const Vec3& b1,
+                                                       EdgeEdgeDistanceType type);
 
 /// The unsigned squared distances, classified: the minimum over the primitives' points.
 inline double point_edge_distance_squared(const Vec3& p, const Vec3& a, const Vec3& b) {

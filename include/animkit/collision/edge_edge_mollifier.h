@@ -28,5 +28,8 @@ double edge_edge_mollifier(const Vec3& a0, const Vec3& a1, const Vec3& b0, const
 /// m and its gradient and Hessian in (a0, a1, b0, b1); zero derivatives where c >= eps_x.
 StencilDerivatives<4> edge_edge_mollifier_derivatives(const Vec3& a0, const Vec3& a1,
                                                       const Vec3& b0, const Vec3& b1, double eps_x);
+/// m and its gradient alone (the same numbers).
+StencilGradient<4> edge_edge_mollifier_gradient(const Vec3& a0, const Vec3& a1, const Vec3& b0,
+                                                const Vec3& b1, double eps_x);
 
 }  // namespace animkit

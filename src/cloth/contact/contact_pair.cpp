@@ -35,6 +35,29 @@ StencilDerivatives<4> distance_derivatives(const ContactPair& pair, const std::a
   return {};
 }
 
+// The same value and gradient without the Hessian: for the barrier's gradient and its
+// Gauss-Newton Hessian, which need none (the distance's Hessian is most of the cost).
+StencilGradient<4> distance_gradient(const ContactPair& pair, const std::array<Vec3, 4>& p,
+                                     double ground) {
+  switch (pair.kind) {
+    case ContactKind::point_triangle:
+      return point_triangle_distance_squared_gradient(
+          p[0], p[1], p[2], p[3], point_triangle_distance_type(p[0], p[1], p[2], p[3]));
+    case ContactKind::edge_edge:
+      return edge_edge_distance_squared_gradient(
+          p[0], p[1], p[2], p[3], edge_edge_distance_type(p[0], p[1], p[2], p[3]));
+    case ContactKind::ground: {
+      StencilGradient<4> d;
+      const double gap = p[0].y() - ground;
+      d.value = gap * gap;
+      d.gradient[1] = 2.0 * gap;
+      return d;
+    }
+  }
+  assert(false && "unknown contact kind");
+  return {};
+}
+
 }  // namespace
 
 double contact_distance_squared(const ContactPair& pair, const std::array<Vec3, 4>& p,
@@ -100,7 +123,7 @@ Eigen::Matrix<double, 12, 12> contact_barrier_gauss_newton_hessian(const Contact
                                                                    const std::array<Vec3, 4>& p,
                                                                    double ground,
                                                                    const LogBarrier& barrier) {
-  const StencilDerivatives<4> d = distance_derivatives(pair, p, ground);
+  const StencilGradient<4> d = distance_gradient(pair, p, ground);
   assert(d.value > 0.0 && "a contact pair's derivatives need a positive distance");
   if (!(d.value < barrier.dhat())) return Eigen::Matrix<double, 12, 12>::Zero();  // inactive
   const double curvature = std::max(
@@ -115,13 +138,13 @@ Eigen::Matrix<double, 12, 12> contact_barrier_gauss_newton_hessian(const Contact
 Eigen::Matrix<double, 12, 1> contact_barrier_gradient(const ContactPair& pair,
                                                       const std::array<Vec3, 4>& p, double ground,
                                                       const LogBarrier& barrier) {
-  const StencilDerivatives<4> d = distance_derivatives(pair, p, ground);
+  const StencilGradient<4> d = distance_gradient(pair, p, ground);
   assert(d.value > 0.0 && "a contact pair's derivatives need a positive distance");
   if (!(d.value < barrier.dhat())) return Eigen::Matrix<double, 12, 1>::Zero();  // inactive
   Eigen::Matrix<double, 12, 1> gradient = barrier.first_derivative(d.value) * d.gradient;
   if (pair.kind == ContactKind::edge_edge) {
-    const StencilDerivatives<4> m =
-        edge_edge_mollifier_derivatives(p[0], p[1], p[2], p[3], pair.mollifier_threshold);
+    const StencilGradient<4> m =
+        edge_edge_mollifier_gradient(p[0], p[1], p[2], p[3], pair.mollifier_threshold);
     gradient = m.value * gradient + barrier.value(d.value) * m.gradient;
   }
   return gradient;
