@@ -122,7 +122,7 @@ struct ContactTerm::Impl {
   // on a ball at 100 m/s meeting a 5 x 5 sheet, most gathered pairs. What is left is what the
   // barrier, CCD and the line search then go over at every iteration.
   // The distances it measures at x are the kept pairs' entry in `at`.
-  mutable std::vector<char> pair_kept;
+  std::vector<char> pair_kept;
   void keep_reachable(const Eigen::VectorXd& x) {
     const int n = model->particle_count();
     const double within = std::sqrt(barrier.dhat()) * (1.0 + 1e-6);
