@@ -34,11 +34,17 @@ SmoothedAggregation::SmoothedAggregation(const ClothModel& model, const Multigri
     : model_(model), options_(options) {
   const int n = model.particle_count();
   // Finest pattern: a particle's block row holds itself and the free particles it shares a
-  // spring with; pinned rows hold only their (identity) diagonal.
+  // spring with, but for the bends' coupling springs (lumped_springs_); pinned rows hold only
+  // their (identity) diagonal.
   std::vector<std::vector<int>> rows(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) rows[i].push_back(i);
-  for (const auto& [a, b] : model.springs) {
+  for (std::size_t s = 0; s < model.springs.size(); ++s) {
+    const auto [a, b] = model.springs[s];
     if (model.pinned[a] || model.pinned[b]) continue;
+    if (model.stiffness[s] == 0.0) {
+      lumped_springs_.push_back(static_cast<int>(s));
+      continue;
+    }
     rows[a].push_back(b);
     rows[b].push_back(a);
   }
@@ -49,10 +55,11 @@ SmoothedAggregation::SmoothedAggregation(const ClothModel& model, const Multigri
   levels_.emplace_back();
   levels_[0].a = block_pattern<3, 3>(rows, n);
   spring_blocks_.reserve(model.springs.size());
-  for (const auto& [a, b] : model.springs) {
-    const bool free = !model.pinned[a] && !model.pinned[b];
+  for (std::size_t s = 0; s < model.springs.size(); ++s) {
+    const auto [a, b] = model.springs[s];
+    const bool kept = !model.pinned[a] && !model.pinned[b] && model.stiffness[s] != 0.0;
     spring_blocks_.push_back(
-        {free ? levels_[0].a.find(a, b) : -1, free ? levels_[0].a.find(b, a) : -1});
+        {kept ? levels_[0].a.find(a, b) : -1, kept ? levels_[0].a.find(b, a) : -1});
   }
 
   // Levels: aggregate, build T from the near-null space, then P's pattern and the next level.
@@ -163,6 +170,19 @@ void SmoothedAggregation::fill_finest(const BlockHessian& hessian) {
     a.values[spring_blocks_[s][0]] -= hessian.coupling[s];
     a.values[spring_blocks_[s][1]] -= hessian.coupling[s];
   }
+  // A lumped spring's coupling E leaves the pattern and |E| I joins both diagonal blocks:
+  // [|E| I, -E; -E^T, |E| I] is PSD when |E| bounds E's spectral norm (the infinity norm of
+  // a symmetric block does), so the preconditioner's matrix stays SPD and only gains.
+  for (const int s : lumped_springs_) {
+    const auto [i, j] = model_.springs[static_cast<std::size_t>(s)];
+    const double bound = hessian.coupling[static_cast<std::size_t>(s)]
+                             .cwiseAbs()
+                             .rowwise()
+                             .sum()
+                             .maxCoeff();
+    a.values[levels_[0].diagonal[i]].diagonal().array() += bound;
+    a.values[levels_[0].diagonal[j]].diagonal().array() += bound;
+  }
   // The terms' diagonal blocks are in hessian.diagonal already; their couplings go beside
   // (add_term_products always uses them; the V-cycle with coarse_couplings).
   CouplingBlocks& coupling = levels_[0].coupling;
@@ -265,6 +285,7 @@ void SmoothedAggregation::forward_sweep(Level& level, bool from_zero) {
           sum.noalias() -= e->values[k] * level.x.segment<3>(3 * e->column[k]);
       }
     }
+    level.r.segment<3>(3 * i) = sum;  // b_i - (L x)_i, for residual_after_sweep
     level.x.segment<3>(3 * i).noalias() = level.inverse_diagonal[i] * sum;
   }
 }
@@ -286,6 +307,29 @@ void SmoothedAggregation::backward_sweep(Level& level) {
   }
 }
 
+void SmoothedAggregation::residual_after_sweep(Level& level) {
+  // r_i = (b - L x)_i - D_i x_i - (U x)_i, the first term kept by the sweep. D_i x_i is not
+  // dropped as equal to (b - L x)_i, which the sweep solved for: only exact arithmetic makes
+  // it so, and with a contact barrier's ill-conditioned diagonal blocks that version left a
+  // step of a ball pushed into a hanging sheet at Newton's cap (moving_obstacles_test.cpp).
+  // A row's columns are sorted, so the ones after its diagonal block are those after i; the
+  // couplings have no diagonal block.
+  const Matrix& a = level.a;
+  const Matrix* e = couplings(level);
+  for (int i = 0; i < a.block_rows; ++i) {
+    Eigen::Vector3d sum = level.r.segment<3>(3 * i);
+    sum.noalias() -= a.values[level.diagonal[i]] * level.x.segment<3>(3 * i);
+    for (int k = level.diagonal[i] + 1; k < a.row_start[i + 1]; ++k)
+      sum.noalias() -= a.values[k] * level.x.segment<3>(3 * a.column[k]);
+    if (e != nullptr) {
+      for (int k = e->row_start[i]; k < e->row_start[i + 1]; ++k) {
+        if (e->column[k] > i) sum.noalias() -= e->values[k] * level.x.segment<3>(3 * e->column[k]);
+      }
+    }
+    level.r.segment<3>(3 * i) = sum;
+  }
+}
+
 void SmoothedAggregation::cycle(std::size_t l) {
   Level& level = levels_[l];
   if (l + 1 == levels_.size()) {
@@ -295,9 +339,13 @@ void SmoothedAggregation::cycle(std::size_t l) {
   }
   level.x.setZero();
   for (int s = 0; s < options_.smoothing_sweeps; ++s) forward_sweep(level, s == 0);
-  level.a.multiply(level.x, level.r);
-  if (const Matrix* e = couplings(level)) e->multiply_add(level.x, level.r);
-  level.r = level.b - level.r;
+  if (options_.smoothing_sweeps == 1) {
+    residual_after_sweep(level);
+  } else {
+    level.a.multiply(level.x, level.r);
+    if (const Matrix* e = couplings(level)) e->multiply_add(level.x, level.r);
+    level.r = level.b - level.r;
+  }
   Level& next = levels_[l + 1];
   level.p.multiply_transpose(level.r, next.b);
   cycle(l + 1);

@@ -14,13 +14,20 @@
 // solve's own matrix (anisotropic spring blocks), at the cost of a power iteration and the
 // smoothing per level.
 //
+// A bend's coupling between the two ends of its line (a spring of stiffness 0 in the model)
+// stays out of the finest pattern: its block E is lumped onto both ends' diagonal blocks as
+// |E| I, which keeps the preconditioner's matrix SPD (and, with the bends far softer than the
+// membrane, about as good). The finest level loses a third of its blocks (a grid's rows 13 to
+// 9), and the coarser ones follow: each CG iteration is cheaper.
+//
 // An energy term's blocks between particles the springs do not join (contact) change pattern
 // from solve to solve: they ride beside each level's fixed pattern (coupling_blocks.h), so
 // every level is still the Galerkin product of the whole Hessian.
 //
 // One application is a V-cycle with a forward block Gauss-Seidel sweep before the coarse
 // correction and a backward one after it: the cycle is then a symmetric positive definite
-// operator, as CG needs.
+// operator, as CG needs. After a single forward sweep from zero, the residual it passes down
+// needs only the diagonal and upper triangle (residual_after_sweep).
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <vector>
@@ -82,6 +89,9 @@ class SmoothedAggregation {
   // ones are still zero and would add nothing): half the products of a sweep.
   void forward_sweep(Level& level, bool from_zero);
   void backward_sweep(Level& level);
+  // r = b - A x after a single forward sweep from zero, which left (b - L x)_i in r: the
+  // diagonal and upper triangle remain, about half a product.
+  void residual_after_sweep(Level& level);
   void cycle(std::size_t l);
 
   const ClothModel& model_;
@@ -90,6 +100,7 @@ class SmoothedAggregation {
   std::vector<Eigen::Matrix3d> term_diagonal_;  // the terms' diagonal blocks, per particle
   bool has_terms_ = false;
   std::vector<std::array<int, 2>> spring_blocks_;  // per spring: positions of (a,b), (b,a)
+  std::vector<int> lumped_springs_;  // the bends' coupling springs between free particles
   Eigen::MatrixXd coarsest_dense_;
   Eigen::LLT<Eigen::MatrixXd> coarsest_;
   Eigen::VectorXd power_x_, power_y_;  // power iteration workspace (finest size)
