@@ -214,8 +214,8 @@ std::function<int()> add_cloth_command(CLI::App& app) {
                    "auto (the fastest on this scene, measured over its first 3 steps) or one "
                    "of: " +
                        integrator_names() +
-                       "; with a collider or --ground and neither this nor --tolerance, the "
-                       "fast contact settings (docs/contact.md)")
+                       "; with a collider, --ground or --material and neither this nor "
+                       "--tolerance, the fast settings (docs/contact.md)")
       ->capture_default_str();
   cloth
       ->add_option("--substeps", args->substeps,

@@ -110,10 +110,11 @@ Result<ClothWorldDesc> world_of(const ClothArgs& args) {
   }
   if (!scene || args.given("--tolerance"))
     set_tolerance(world.simulation.integrator, args.tolerance);
-  // A world of options with contact solves as the built-in contact scenes do unless the solver
-  // is chosen: the lab's defaults (CG, 1e-6) are many times slower there.
-  if (!scene && contact && !args.given("--integrator") && !args.given("--tolerance"))
-    use_fast_contact_settings(world);
+  // A world of options with contact or a material solves as the built-in contact scenes do
+  // unless the solver is chosen: the lab's defaults (CG, 1e-6) are many times slower there.
+  if (!scene && world.fast_by_default() && !args.given("--integrator") &&
+      !args.given("--tolerance"))
+    use_fast_settings(world);
   return world;
 }
 

@@ -99,9 +99,9 @@ void bind_scenes(py::module_& m) {
              set_cloth(d, cloth);
              d.colliders = std::move(colliders);
              d.ground = ground;
-             // With contact and no integrator given, the fast contact settings (Newton's, and
-             // the barrier Hessian unless `contact` gives one).
-             if (integrator.is_none() && d.has_contact()) use_fast_contact_settings(d);
+             // With contact or a material and no integrator given, the fast settings (Newton's,
+             // and the barrier Hessian unless `contact` gives one).
+             if (integrator.is_none() && d.fast_by_default()) use_fast_settings(d);
              if (contact) d.contact = *contact;
              d.air = air;
              if (!integrator.is_none()) set_integrator(d, integrator);
@@ -117,7 +117,7 @@ void bind_scenes(py::module_& m) {
            "cloth: a GridCloth (default: the lab's) or a MeshCloth; colliders: a list of "
            "Collider (distinct names); ground: a Ground or None; contact: ContactSettings (None: "
            "the defaults); air: AirSettings or None (still air); integrator: NewtonSettings "
-           "(default; with colliders or ground, the fast contact settings of docs/contact.md), "
+           "(default; with colliders, ground or a material, the fast settings of docs/contact.md), "
            "VbdSettings, LocalGlobalSettings, ExplicitEulerSettings or a registry "
            "name (integrator_names()); substeps per step (0: the integrator's default); dt: s "
            "per frame; frames: the run's length; self_friction: mu between parts of the cloth; "

@@ -96,7 +96,12 @@ Result<std::shared_ptr<ContactTerm>> make_contact(const ClothWorldDesc& desc,
 
 }  // namespace
 
-void use_fast_contact_settings(ClothWorldDesc& world) {
+bool ClothWorldDesc::is_physical() const {
+  if (const auto* grid = std::get_if<GridClothOptions>(&cloth)) return grid->material.has_value();
+  return std::get<MeshClothOptions>(cloth).material.has_value();
+}
+
+void use_fast_settings(ClothWorldDesc& world) {
   NewtonSettings newton;
   newton.linear_solver = LinearSolverKind::multigrid;
   newton.tolerance = 1e-4;

@@ -38,10 +38,11 @@ class SceneReader {
       fields.finish();
       desc.ground = g;
     }
-    // Without a solver a scene with contact solves as the built-in contact scenes do (the
-    // lab's CG to 1e-6 is slower there: docs/contact.md); a "contact" "hessian" still applies.
+    // Without a solver a scene with contact or a physical sheet solves as the built-in contact
+    // scenes do (the lab's CG to 1e-6 is many times slower there: docs/contact.md); a
+    // "contact" "hessian" still applies.
     const auto* solver = scene.object("solver");
-    if (!solver && desc.has_contact()) use_fast_contact_settings(desc);
+    if (!solver && desc.fast_by_default()) use_fast_settings(desc);
     if (const auto* contact = scene.object("contact")) read_contact(*contact, desc);
     if (const auto* wind = scene.object("wind")) desc.air = read_air(*wind);
     if (solver) read_solver(*solver, desc);

@@ -121,7 +121,7 @@ ClothWorldDesc cotton_sheet_world(int cells, double size, double height) {
   grid.offset = Vec3(-0.5 * size, 0.0, 0.0);  // the grid starts at x = 0: centre it
   world.cloth = grid;
   world.material_name = "cotton";
-  use_fast_contact_settings(world);
+  use_fast_settings(world);
   world.time_step = 1.0 / 30.0;
   return world;
 }

@@ -53,6 +53,12 @@ struct ClothWorldDesc {
 
   /// Whether the cloth has something to touch: a collider or a ground (then contact is on).
   bool has_contact() const { return !colliders.empty() || ground.has_value(); }
+  /// Whether the sheet is physical: a material (the grid's or the mesh's) gives its masses and
+  /// stiffnesses, rather than the lab's per-particle parameters.
+  bool is_physical() const;
+  /// Whether a run that names no solver of its own takes use_fast_settings(): a physical
+  /// sheet or one with something to touch. The lab's cloth keeps the lab's solver (CG, 1e-6).
+  bool fast_by_default() const { return has_contact() || is_physical(); }
   /// Friction's settings: each collider's and the ground's coefficient, self_friction (0
   /// without self-contact), the passes.
   FrictionSettings friction_settings() const;
@@ -72,14 +78,15 @@ constexpr int kMaxWorldFrames = 1'000'000;
 /// steps while new parts of the cloth arrive at a collider.
 constexpr int kContactNewtonIterations = 300;
 
-/// The fast contact settings (docs/contact.md): Newton with the multigrid preconditioner to
+/// The fast settings (docs/contact.md), which a physical sheet or one with contact takes unless
+/// its solver is named (fast_by_default): Newton with the multigrid preconditioner to
 /// 1e-4 relative gradient or IPC's velocity stop at 1e-3 (NewtonSettings::velocity_tolerance),
 /// CG to a fixed 10% residual (linear_forcing) and the adaptive barrier Hessian
 /// (BarrierHessian::adaptive). Every iterate stays intersection-free as with IPC's own
 /// settings (projected Hessian, 1e-4 alone), which remain the reference they are measured
 /// against: on drape-sphere at 41 x 41, 1.85 times faster over the run, every step within
 /// 15 mm of the reference's from the same state (median 0.03 mm; docs/contact.md).
-void use_fast_contact_settings(ClothWorldDesc& world);
+void use_fast_settings(ClothWorldDesc& world);
 
 /// IPC's own settings, the reference quality mode the fast ones are measured against: Newton
 /// with the multigrid preconditioner to 1e-4 relative gradient alone, CG's adaptive forcing,

@@ -29,9 +29,9 @@
 //   "dt": 0.0166667, "frames": 300
 // }
 //
-// Without "solver", a scene with colliders or a ground solves with the fast contact settings
-// (use_fast_contact_settings), as the built-in contact scenes do; one with neither, with the
-// lab's (implicit-pcg to 1e-6). OBJ paths are relative to the scene file's folder.
+// Without "solver", a scene with colliders or a ground, or with a "material", solves with the
+// fast settings (use_fast_settings), as the built-in contact scenes do; the lab's cloth
+// without either, with the lab's solver (implicit-pcg to 1e-6). OBJ paths are relative to the scene file's folder.
 #include <filesystem>
 #include <string_view>
 

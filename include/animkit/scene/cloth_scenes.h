@@ -48,7 +48,7 @@ ClothPictureFrame widened_to_hold(ClothPictureFrame frame, const ClothState& sta
 
 /// The square cotton sheet of `cells` cells per side and `size` m that the contact scenes
 /// use: flat at height y, centred on the y axis, free (no pins), gravity 9.81, at dt 1/30 s,
-/// solved with use_fast_contact_settings().
+/// solved with use_fast_settings().
 ClothWorldDesc cotton_sheet_world(int cells, double size, double height);
 
 }  // namespace animkit
