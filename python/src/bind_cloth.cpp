@@ -117,10 +117,11 @@ void bind_scenes(py::module_& m) {
            "cloth: a GridCloth (default: the lab's) or a MeshCloth; colliders: a list of "
            "Collider (distinct names); ground: a Ground or None; contact: ContactSettings (None: "
            "the defaults); air: AirSettings or None (still air); integrator: NewtonSettings "
-           "(default; with colliders, ground or a material, the fast settings of docs/contact.md), "
-           "VbdSettings, LocalGlobalSettings, ExplicitEulerSettings or a registry "
-           "name (integrator_names()); substeps per step (0: the integrator's default); dt: s "
-           "per frame; frames: the run's length; self_friction: mu between parts of the cloth; "
+           "(default; with colliders, ground or a material, the fast settings of "
+           "docs/contact.md), VbdSettings, LocalGlobalSettings, ExplicitEulerSettings or a "
+           "registry name (integrator_names()); substeps per step (0: the integrator's "
+           "default); dt: s per frame; frames: the run's length; self_friction: mu between "
+           "parts of the cloth; "
            "friction_passes: friction's lagging passes; material_name: for reports. Raises "
            "animkit.Error naming the first invalid part.",
            py::arg("cloth") = py::none(), py::arg("colliders") = std::vector<ColliderDesc>{},

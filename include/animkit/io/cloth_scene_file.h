@@ -31,7 +31,8 @@
 //
 // Without "solver", a scene with colliders or a ground, or with a "material", solves with the
 // fast settings (use_fast_settings), as the built-in contact scenes do; the lab's cloth
-// without either, with the lab's solver (implicit-pcg to 1e-6). OBJ paths are relative to the scene file's folder.
+// without either, with the lab's solver (implicit-pcg to 1e-6). OBJ paths are relative to the
+// scene file's folder.
 #include <filesystem>
 #include <string_view>
 
