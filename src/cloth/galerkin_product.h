@@ -4,8 +4,12 @@
 // which block products add into which output block; compute() then replays that list on new
 // values: no searching, no allocation, and always the same order of sums (same bits).
 // A is symmetric, so only the upper block triangle of A_c is summed and the lower one mirrored.
+// The products of one output row are listed together, so rows run in parallel with each block
+// still summed in the same order: the same bits with any number of threads.
+#include <algorithm>
 #include <vector>
 
+#include "../core/parallel.h"
 #include "block_sparse_matrix.h"
 
 namespace animkit {
@@ -35,12 +39,14 @@ class GalerkinProduct {
     }
     ap_ = block_pattern<F, C>(rows, coarse);
     ap_terms_.clear();
+    ap_row_terms_.assign(1, 0);
     for (int i = 0; i < fine; ++i) {
       for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
         const int j = a.column[k];
         for (int q = p.row_start[j]; q < p.row_start[j + 1]; ++q)
           ap_terms_.push_back({ap_.find(i, p.column[q]), k, q});
       }
+      ap_row_terms_.push_back(static_cast<int>(ap_terms_.size()));
     }
     // P^T (A P): coarse row c gathers the rows of A P of the fine nodes that P maps onto c.
     std::vector<std::vector<int>> fine_of(static_cast<std::size_t>(coarse));  // P blocks by column
@@ -67,6 +73,7 @@ class GalerkinProduct {
     }
     BlockSparseMatrix<C, C> result = block_pattern<C, C>(coarse_rows, coarse);
     coarse_terms_.clear();
+    coarse_row_terms_.assign(1, 0);
     mirror_.clear();
     for (int c = 0; c < coarse; ++c) {
       for (int q : fine_of[c]) {
@@ -75,6 +82,7 @@ class GalerkinProduct {
           if (ap_.column[t] >= c) coarse_terms_.push_back({result.find(c, ap_.column[t]), q, t});
         }
       }
+      coarse_row_terms_.push_back(static_cast<int>(coarse_terms_.size()));
       for (int t = result.row_start[c]; t < result.row_start[c + 1]; ++t) {
         if (result.column[t] < c) mirror_.push_back({t, result.find(result.column[t], c)});
       }
@@ -85,12 +93,21 @@ class GalerkinProduct {
   /// Writes P^T A P into `coarse` (the pattern analyze() returned).
   void compute(const BlockSparseMatrix<F, F>& a, const BlockSparseMatrix<F, C>& p,
                BlockSparseMatrix<C, C>& coarse) {
-    for (auto& block : ap_.values) block.setZero();
-    for (const Term& t : ap_terms_)
-      ap_.values[t.out].noalias() += a.values[t.left] * p.values[t.right];
-    for (auto& block : coarse.values) block.setZero();
-    for (const Term& t : coarse_terms_)
-      coarse.values[t.out].noalias() += p.values[t.left].transpose() * ap_.values[t.right];
+    parallel::for_each_weighted(a.block_rows, weight(ap_row_terms_), [&](int i) {
+      for (int b = ap_.row_start[i]; b < ap_.row_start[i + 1]; ++b) ap_.values[b].setZero();
+      for (int k = ap_row_terms_[i]; k < ap_row_terms_[i + 1]; ++k) {
+        const Term& t = ap_terms_[static_cast<std::size_t>(k)];
+        ap_.values[t.out].noalias() += a.values[t.left] * p.values[t.right];
+      }
+    });
+    parallel::for_each_weighted(coarse.block_rows, weight(coarse_row_terms_), [&](int c) {
+      for (int b = coarse.row_start[c]; b < coarse.row_start[c + 1]; ++b)
+        coarse.values[b].setZero();
+      for (int k = coarse_row_terms_[c]; k < coarse_row_terms_[c + 1]; ++k) {
+        const Term& t = coarse_terms_[static_cast<std::size_t>(k)];
+        coarse.values[t.out].noalias() += p.values[t.left].transpose() * ap_.values[t.right];
+      }
+    });
     for (const auto& [to, from] : mirror_) coarse.values[to] = coarse.values[from].transpose();
   }
 
@@ -98,8 +115,16 @@ class GalerkinProduct {
   struct Term {
     int out, left, right;
   };
+  // A row's work for parallel::for_each_weighted: its block products (each a few dozen
+  // multiply-adds, about one light iteration) on average.
+  static int weight(const std::vector<int>& row_terms) {
+    const int rows = static_cast<int>(row_terms.size()) - 1;
+    return rows > 0 ? std::max(1, row_terms.back() / rows) : 1;
+  }
+
   BlockSparseMatrix<F, C> ap_;
   std::vector<Term> ap_terms_, coarse_terms_;
+  std::vector<int> ap_row_terms_, coarse_row_terms_;  // per output row: its first term
   std::vector<std::pair<int, int>> mirror_;
 };
 
