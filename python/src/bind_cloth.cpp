@@ -121,9 +121,8 @@ void bind_scenes(py::module_& m) {
            "docs/contact.md), VbdSettings, LocalGlobalSettings, ExplicitEulerSettings or a "
            "registry name (integrator_names()); substeps per step (0: the integrator's "
            "default); dt: s per frame; frames: the run's length; self_friction: mu between "
-           "parts of the cloth; "
-           "friction_passes: friction's lagging passes; material_name: for reports. Raises "
-           "animkit.Error naming the first invalid part.",
+           "parts of the cloth; friction_passes: friction's lagging passes; material_name: for "
+           "reports. Raises animkit.Error naming the first invalid part.",
            py::arg("cloth") = py::none(), py::arg("colliders") = std::vector<ColliderDesc>{},
            py::arg("ground") = py::none(), py::arg("contact") = py::none(),
            py::arg("air") = py::none(), py::arg("integrator") = py::none(),

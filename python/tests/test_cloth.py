@@ -241,6 +241,10 @@ def test_scene_defaults_and_builtins():
     assert isinstance(scene.integrator, animkit.NewtonSettings)
     assert scene.integrator_name == "implicit-pcg"
     assert repr(scene).startswith("ClothScene(cloth=GridCloth(cells=10")
+    # A material without colliders: the fast settings, not the lab's CG to 1e-6.
+    cotton = animkit.ClothScene(cloth=animkit.GridCloth(material=animkit.material("cotton")))
+    assert cotton.integrator_name == "implicit-multigrid"
+    assert cotton.integrator.velocity_tolerance == 1e-3
     names = animkit.builtin_cloth_scene_names()
     assert names[0] == "lab" and "drape-sphere" in names
     for name in names:

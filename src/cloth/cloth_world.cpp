@@ -97,8 +97,7 @@ Result<std::shared_ptr<ContactTerm>> make_contact(const ClothWorldDesc& desc,
 }  // namespace
 
 bool ClothWorldDesc::is_physical() const {
-  if (const auto* grid = std::get_if<GridClothOptions>(&cloth)) return grid->material.has_value();
-  return std::get<MeshClothOptions>(cloth).material.has_value();
+  return std::visit([](const auto& sheet) { return sheet.material.has_value(); }, cloth);
 }
 
 void use_fast_settings(ClothWorldDesc& world) {

@@ -19,6 +19,10 @@ int MultigridPcg::level_nodes(int level) const {
   return multigrid_->level_nodes(level);
 }
 
+int MultigridPcg::level_blocks(int level) const {
+  return multigrid_->level_blocks(level);
+}
+
 void MultigridPcg::apply_preconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
   multigrid_->apply(r, z);
 }

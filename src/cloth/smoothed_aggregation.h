@@ -62,6 +62,7 @@ class SmoothedAggregation {
   int level_count() const { return static_cast<int>(levels_.size()); }
   /// Nodes (3 unknowns each) on level l (0: the particles).
   int level_nodes(int l) const { return levels_[l].a.block_rows; }
+  int level_blocks(int l) const { return levels_[l].a.block_count(); }
 
  private:
   struct Level {

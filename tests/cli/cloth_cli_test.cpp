@@ -76,6 +76,7 @@ TEST(ClothCli, AMaterialGivesAPhysicalSheet) {
     EXPECT_FALSE(m["options"].contains(unused)) << unused;
   }
   EXPECT_EQ(m["converged_fraction"], 1.0);
+  EXPECT_EQ(m["integrator"], "implicit-multigrid");  // the fast settings, not the lab's CG
   // Axis springs and diagonals plus the coupling springs of the bends; no distance-2 springs.
   EXPECT_EQ(m["springs"], 2 * 10 * 11 + 2 * 10 * 10 + 2 * 9 * 11);
 }

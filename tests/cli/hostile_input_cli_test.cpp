@@ -250,7 +250,7 @@ TEST(HostileInputCli, RandomScenesAreRefusedCleanlyOrRunWhole) {
     for (const auto& step : metrics["steps"]) {
       if (!step["converged"].get<bool>()) {
         ++unconverged;
-      } else {  // by the gradient or by the velocity stop (the fast contact settings')
+      } else {  // by the gradient or by the velocity stop (the fast settings')
         EXPECT_TRUE(step["gradient_norm_end"].get<double>() <=
                         step["gradient_tolerance"].get<double>() ||
                     step["newton_speed_end"].get<double>() <= step["speed_tolerance"].get<double>())

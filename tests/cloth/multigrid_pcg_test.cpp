@@ -90,8 +90,8 @@ Eigen::VectorXd direct_solve(const NewtonSystem& system) {
   return ldlt.solve(system.b);
 }
 
-void expect_matches_direct_solve(const NewtonSystem& system) {
-  MultigridPcg pcg(system.model);
+void expect_matches_direct_solve(const NewtonSystem& system, const MultigridOptions& options = {}) {
+  MultigridPcg pcg(system.model, options);
   EXPECT_GT(pcg.level_count(), 1);
   Eigen::VectorXd x(system.b.size());
   const PcgResult result = pcg.solve(system.a, system.b, x, 1e-8, 200);
@@ -116,6 +116,11 @@ TEST(MultigridPcg, MatchesDirectSolveOnHangingGrid) {
 
 TEST(MultigridPcg, MatchesDirectSolveOnIrregularSpringGraph) {
   expect_matches_direct_solve(hanging_system(irregular_cloth(), 10));
+}
+
+// More than one sweep takes the residual from a whole product (one sweep reuses the sweep's).
+TEST(MultigridPcg, MatchesDirectSolveWithTwoSweeps) {
+  expect_matches_direct_solve(hanging_system(cotton(16, 1000.0), 10), {.smoothing_sweeps = 2});
 }
 
 // The V-cycle set up for `system`'s matrix, applied to random vectors over the free particles:
@@ -162,6 +167,22 @@ TEST(MultigridPcg, MatchesDirectSolveWithStiffBends) {
   const NewtonSystem system = hanging_system(stiff_bending_sheet(), 10);
   ASSERT_GT(system.model.bend_count(), 0);
   expect_matches_direct_solve(system);
+}
+
+// The finest level holds a block per particle and two per spring between free particles, the
+// bends' coupling springs (stiffness 0) left out.
+TEST(MultigridPcg, TheFinestLevelLeavesTheBendsCouplingsOut) {
+  const NewtonSystem system = hanging_system(stiff_bending_sheet(), 1);
+  const ClothModel& model = system.model;
+  int stiff = 0, coupling = 0;
+  for (int s = 0; s < model.spring_count(); ++s) {
+    const auto [a, b] = model.springs[static_cast<std::size_t>(s)];
+    if (model.pinned[a] || model.pinned[b]) continue;
+    (model.stiffness[static_cast<std::size_t>(s)] > 0.0 ? stiff : coupling) += 1;
+  }
+  ASSERT_GT(coupling, 0);
+  const MultigridPcg pcg(model);
+  EXPECT_EQ(pcg.level_blocks(0), model.particle_count() + 2 * stiff);
 }
 
 TEST(MultigridPcg, PreconditionerWithStiffBendsIsSymmetricPositiveDefinite) {

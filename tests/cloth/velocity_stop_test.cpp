@@ -123,7 +123,7 @@ ClothSimulator cotton_over_ground(double height, double forcing) {
 
 // A cotton sheet dropped 5 mm onto the ground rests on it for 90 steps, every step converged
 // and no gap below a tenth of the thickness, with CG's adaptive forcing and with the fixed 10%
-// of the fast contact settings.
+// of the fast settings.
 TEST(VelocityStop, RestingContactConvergesAndKeepsItsGap) {
   for (const double forcing : {0.0, 0.1}) {
     ClothSimulator sim = cotton_over_ground(5e-3, forcing);

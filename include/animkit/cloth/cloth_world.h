@@ -85,7 +85,7 @@ constexpr int kContactNewtonIterations = 300;
 /// (BarrierHessian::adaptive). Every iterate stays intersection-free as with IPC's own
 /// settings (projected Hessian, 1e-4 alone), which remain the reference they are measured
 /// against: on drape-sphere at 41 x 41, 1.85 times faster over the run, every step within
-/// 15 mm of the reference's from the same state (median 0.03 mm; docs/contact.md).
+/// 18 mm of the reference's from the same state (median 0.03 mm; docs/contact.md).
 void use_fast_settings(ClothWorldDesc& world);
 
 /// IPC's own settings, the reference quality mode the fast ones are measured against: Newton

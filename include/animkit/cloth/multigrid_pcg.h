@@ -51,6 +51,8 @@ class MultigridPcg {
   int level_count() const;
   /// The number of nodes on `level` (0: the particles), 0 <= level < level_count().
   int level_nodes(int level) const;
+  /// The number of 3x3 blocks in `level`'s pattern (energy terms' couplings aside).
+  int level_blocks(int level) const;
 
   /// z = B r with the preconditioner set up by the last solve (for tests).
   void apply_preconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z);

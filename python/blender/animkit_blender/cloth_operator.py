@@ -190,8 +190,8 @@ class ClothBake:
         substeps = get("substeps") or max(1, math.ceil(frame_dt / AUTO_MAX_STEP - 1e-9))
         self.frame_count = last - first + 1
         # One simulator step a Blender frame, cut into substeps by the integrator: every step
-        # the run hands its sinks is a frame to keep. No integrator given: with colliders or
-        # ground, the library's fast contact settings.
+        # the run hands its sinks is a frame to keep. No integrator given: the sheet has a
+        # material, so the library's fast settings.
         scene_desc = animkit.ClothScene(cloth=cloth, colliders=built, ground=ground,
                                         dt=frame_dt, substeps=substeps,
                                         frames=self.frame_count - 1)
