@@ -163,13 +163,18 @@ void SmoothedAggregation::fill_laplacian() {
 
 void SmoothedAggregation::fill_finest(const BlockHessian& hessian) {
   Matrix& a = levels_[0].a;
-  for (auto& block : a.values) block.setZero();
-  for (int i = 0; i < a.block_rows; ++i) a.values[levels_[0].diagonal[i]] = hessian.diagonal[i];
-  for (std::size_t s = 0; s < spring_blocks_.size(); ++s) {
-    if (spring_blocks_[s][0] < 0) continue;
-    a.values[spring_blocks_[s][0]] -= hessian.coupling[s];
-    a.values[spring_blocks_[s][1]] -= hessian.coupling[s];
-  }
+  // Each particle's row and each spring's two blocks are written once: over the threads.
+  parallel::for_each(a.block_rows, [&](int i) {
+    for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) a.values[k].setZero();
+    a.values[levels_[0].diagonal[i]] = hessian.diagonal[i];
+  });
+  parallel::for_each(static_cast<int>(spring_blocks_.size()), [&](int s) {
+    const auto& [ab, ba] = spring_blocks_[static_cast<std::size_t>(s)];
+    if (ab < 0) return;
+    const Matrix3& k = hessian.coupling[static_cast<std::size_t>(s)];
+    a.values[ab] = Matrix3::Zero() - k;  // 0 - k, as the sums always made it (no -0.0)
+    a.values[ba] = Matrix3::Zero() - k;
+  });
   // A lumped spring's coupling E leaves the pattern and |E| I joins both diagonal blocks:
   // [|E| I, -E; -E^T, |E| I] is PSD when |E| bounds E's spectral norm (the infinity norm of
   // a symmetric block does), so the preconditioner's matrix stays SPD and only gains.
@@ -200,8 +205,9 @@ void SmoothedAggregation::fill_finest(const BlockHessian& hessian) {
 }
 
 void SmoothedAggregation::prepare_smoother(Level& level) {
-  for (int i = 0; i < level.a.block_rows; ++i)
+  parallel::for_each(level.a.block_rows, [&](int i) {
     level.inverse_diagonal[i] = inverse_block(level.a.values[level.diagonal[i]]);
+  });
 }
 
 void SmoothedAggregation::smooth_prolongator(Level& level) {
@@ -316,7 +322,7 @@ void SmoothedAggregation::residual_after_sweep(Level& level) {
   // couplings have no diagonal block.
   const Matrix& a = level.a;
   const Matrix* e = couplings(level);
-  for (int i = 0; i < a.block_rows; ++i) {
+  parallel::for_each(a.block_rows, [&](int i) {  // rows apart: the same bits on any threads
     Eigen::Vector3d sum = level.r.segment<3>(3 * i);
     sum.noalias() -= a.values[level.diagonal[i]] * level.x.segment<3>(3 * i);
     for (int k = level.diagonal[i] + 1; k < a.row_start[i + 1]; ++k)
@@ -327,7 +333,7 @@ void SmoothedAggregation::residual_after_sweep(Level& level) {
       }
     }
     level.r.segment<3>(3 * i) = sum;
-  }
+  });
 }
 
 void SmoothedAggregation::cycle(std::size_t l) {
@@ -349,7 +355,12 @@ void SmoothedAggregation::cycle(std::size_t l) {
   Level& next = levels_[l + 1];
   level.p.multiply_transpose(level.r, next.b);
   cycle(l + 1);
-  level.p.multiply_add(next.x, level.x);
+  // x += P x_next, row by row over the threads (each row its own sum: the same bits).
+  parallel::for_each(level.p.block_rows, [&](int i) {
+    for (int k = level.p.row_start[i]; k < level.p.row_start[i + 1]; ++k)
+      level.x.segment<3>(3 * i).noalias() +=
+          level.p.values[k] * next.x.segment<3>(3 * level.p.column[k]);
+  });
   for (int s = 0; s < options_.smoothing_sweeps; ++s) backward_sweep(level);
 }
 
