@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "animkit/cloth/material.h"
@@ -61,6 +62,24 @@ TEST(ClothWorld, ContactIsWiredAndReportsEachStep) {
   EXPECT_GT(step->min_contact_distance, 0.0);
 }
 
+// One step of `fast`, and of `reference` from the same state, both converged: their reports and
+// how far apart (largest coordinate, m) the two steps end. Nothing when a step failed.
+struct StepsFromOneState {
+  StepReport fast, reference;
+  double apart = 0.0;
+};
+std::optional<StepsFromOneState> step_beside(ClothWorld& fast, ClothWorld& reference, int frame) {
+  EXPECT_TRUE(reference.simulator.set_state(fast.simulator.state()));
+  const auto exact = reference.simulator.step(1.0 / 60.0);
+  const auto step = fast.simulator.step(1.0 / 60.0);
+  EXPECT_TRUE(exact && step);
+  if (!exact || !step) return std::nullopt;
+  EXPECT_TRUE(exact->converged && step->converged) << "frame " << frame;
+  const double apart = (fast.simulator.state().positions - reference.simulator.state().positions)
+                           .lpNorm<Eigen::Infinity>();
+  return StepsFromOneState{*step, *exact, apart};
+}
+
 // The reference quality mode (IPC's settings) and the fast settings: what each sets,
 // and that on a sheet landing on a ball they end each step within a millimetre of each other.
 TEST(ClothWorld, FastContactSettingsFollowTheReference) {
@@ -84,15 +103,9 @@ TEST(ClothWorld, FastContactSettingsFollowTheReference) {
   auto fast = build_cloth_world(fast_desc);
   ASSERT_TRUE(reference && fast);
   for (int frame = 0; frame < 20; ++frame) {
-    ASSERT_TRUE(reference->simulator.set_state(fast->simulator.state()));
-    const auto exact = reference->simulator.step(1.0 / 60.0);
-    const auto step = fast->simulator.step(1.0 / 60.0);
-    ASSERT_TRUE(exact && step);
-    EXPECT_TRUE(exact->converged && step->converged) << "frame " << frame;
-    const double apart =
-        (fast->simulator.state().positions - reference->simulator.state().positions)
-            .lpNorm<Eigen::Infinity>();
-    EXPECT_LE(apart, 1e-3) << "frame " << frame;
+    const auto steps = step_beside(*fast, *reference, frame);
+    ASSERT_TRUE(steps);
+    EXPECT_LE(steps->apart, 1e-3) << "frame " << frame;
   }
 }
 
@@ -120,18 +133,12 @@ TEST(ClothWorld, APhysicalSheetTakesTheFastSettingsAndFollowsATightReference) {
   double farthest = 0.0;
   int fast_iterations = 0, tight_iterations = 0, beyond = 0;
   for (int frame = 0; frame < 40; ++frame) {
-    ASSERT_TRUE(reference->simulator.set_state(fast->simulator.state()));
-    const auto exact = reference->simulator.step(1.0 / 60.0);
-    const auto step = fast->simulator.step(1.0 / 60.0);
-    ASSERT_TRUE(exact && step);
-    EXPECT_TRUE(exact->converged && step->converged) << "frame " << frame;
-    fast_iterations += step->newton_iterations;
-    tight_iterations += exact->newton_iterations;
-    const double apart =
-        (fast->simulator.state().positions - reference->simulator.state().positions)
-            .lpNorm<Eigen::Infinity>();
-    farthest = std::max(farthest, apart);
-    beyond += apart > 1e-4 ? 1 : 0;
+    const auto steps = step_beside(*fast, *reference, frame);
+    ASSERT_TRUE(steps);
+    fast_iterations += steps->fast.newton_iterations;
+    tight_iterations += steps->reference.newton_iterations;
+    farthest = std::max(farthest, steps->apart);
+    beyond += steps->apart > 1e-4 ? 1 : 0;
   }
   EXPECT_LE(beyond, 3);
   EXPECT_LE(farthest, 5e-3);
