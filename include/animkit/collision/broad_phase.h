@@ -16,6 +16,7 @@
 // Self pairs that share a vertex (a vertex and its own triangles, edges with a common end) are
 // never reported: their distance is zero by construction and IPC does not treat them as contact.
 #include <Eigen/Core>
+#include <array>
 #include <compare>
 #include <cstdint>
 #include <vector>
@@ -64,6 +65,11 @@ struct Box {
   /// Lower corner (componentwise minimum), world space.
   Vec3 lo, hi;  ///< upper corner (componentwise maximum), world space
 };
+/// The grid cells a box overlaps: [lo[a], hi[a]] along each axis a.
+struct CellSpan {
+  std::array<int, 3> lo, hi;  ///< first and last cell coordinate per axis
+};
+
 /// A primitive (global index over both meshes' vertices, edges, triangles) in a grid cell.
 struct CellEntry {
   std::uint64_t cell;  ///< linear index (i * ny + j) * nz + k of the grid cell (i, j, k)
@@ -95,7 +101,11 @@ class BroadPhase {
 
  private:
   std::vector<broad_phase_detail::Box> boxes_;
+  std::vector<broad_phase_detail::CellSpan> spans_;
   std::vector<broad_phase_detail::CellEntry> entries_, scratch_;
+  std::vector<ContactCandidates> parts_;  // per task of the pair collection
+  std::vector<VertexTriangleCandidate> vertex_triangle_scratch_;
+  std::vector<EdgeEdgeCandidate> edge_edge_scratch_;
 };
 
 }  // namespace animkit
