@@ -7,6 +7,7 @@
 // The products of one output row are listed together, so rows run in parallel with each block
 // still summed in the same order: the same bits with any number of threads.
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "../core/parallel.h"
@@ -90,22 +91,36 @@ class GalerkinProduct {
     return result;
   }
 
-  /// Writes P^T A P into `coarse` (the pattern analyze() returned).
+  /// Writes P^T A P into `coarse` (the pattern analyze() returned). `p_scale`, when given,
+  /// says that every block of P is a multiple of the identity, P_q = p_scale[q] I (so P^T's
+  /// too): each block product is then a scaling, a third of the multiply-adds.
   void compute(const BlockSparseMatrix<F, F>& a, const BlockSparseMatrix<F, C>& p,
-               BlockSparseMatrix<C, C>& coarse) {
+               BlockSparseMatrix<C, C>& coarse, const std::vector<double>* p_scale = nullptr) {
     parallel::for_each_weighted(a.block_rows, weight(ap_row_terms_), [&](int i) {
       for (int b = ap_.row_start[i]; b < ap_.row_start[i + 1]; ++b) ap_.values[b].setZero();
-      for (int k = ap_row_terms_[i]; k < ap_row_terms_[i + 1]; ++k) {
-        const Term& t = ap_terms_[static_cast<std::size_t>(k)];
-        ap_.values[t.out].noalias() += a.values[t.left] * p.values[t.right];
+      const auto first = ap_terms_.begin() + ap_row_terms_[i];
+      const auto last = ap_terms_.begin() + ap_row_terms_[i + 1];
+      if (p_scale != nullptr) {
+        for (auto t = first; t != last; ++t)
+          add_scaled((*p_scale)[static_cast<std::size_t>(t->right)], a.values[t->left],
+                     ap_.values[t->out]);
+      } else {
+        for (auto t = first; t != last; ++t)
+          ap_.values[t->out].noalias() += a.values[t->left] * p.values[t->right];
       }
     });
     parallel::for_each_weighted(coarse.block_rows, weight(coarse_row_terms_), [&](int c) {
       for (int b = coarse.row_start[c]; b < coarse.row_start[c + 1]; ++b)
         coarse.values[b].setZero();
-      for (int k = coarse_row_terms_[c]; k < coarse_row_terms_[c + 1]; ++k) {
-        const Term& t = coarse_terms_[static_cast<std::size_t>(k)];
-        coarse.values[t.out].noalias() += p.values[t.left].transpose() * ap_.values[t.right];
+      const auto first = coarse_terms_.begin() + coarse_row_terms_[c];
+      const auto last = coarse_terms_.begin() + coarse_row_terms_[c + 1];
+      if (p_scale != nullptr) {
+        for (auto t = first; t != last; ++t)
+          add_scaled((*p_scale)[static_cast<std::size_t>(t->left)], ap_.values[t->right],
+                     coarse.values[t->out]);
+      } else {
+        for (auto t = first; t != last; ++t)
+          coarse.values[t->out].noalias() += p.values[t->left].transpose() * ap_.values[t->right];
       }
     });
     for (const auto& [to, from] : mirror_) coarse.values[to] = coarse.values[from].transpose();
@@ -115,6 +130,13 @@ class GalerkinProduct {
   struct Term {
     int out, left, right;
   };
+  // out += s block, each entry one fused multiply-add: written out, so that the compiler cannot
+  // contract it one way in the serial loop and another in the threads' (the same bits).
+  template <class Block>
+  static void add_scaled(double s, const Block& block, Block& out) {
+    for (Eigen::Index e = 0; e < Block::SizeAtCompileTime; ++e)
+      out.data()[e] = std::fma(s, block.data()[e], out.data()[e]);
+  }
   // A row's work for parallel::for_each_weighted: its block products (each a few dozen
   // multiply-adds, about one light iteration) on average.
   static int weight(const std::vector<int>& row_terms) {

@@ -28,6 +28,17 @@ Matrix3 inverse_block(const Matrix3& block) {
   return invertible ? inverse : Matrix3::Identity();
 }
 
+// Each block's c when every block of p is exactly c I; empty otherwise.
+std::vector<double> scalar_blocks(const BlockSparseMatrix<3, 3>& p) {
+  std::vector<double> scale;
+  scale.reserve(p.values.size());
+  for (const Matrix3& block : p.values) {
+    if (block != block(0, 0) * Matrix3::Identity()) return {};
+    scale.push_back(block(0, 0));
+  }
+  return scale;
+}
+
 }  // namespace
 
 SmoothedAggregation::SmoothedAggregation(const ClothModel& model, const MultigridOptions& options)
@@ -130,11 +141,16 @@ SmoothedAggregation::SmoothedAggregation(const ClothModel& model, const Multigri
   coarsest_.compute(Eigen::MatrixXd::Identity(coarse_size, coarse_size));
 
   if (!options_.resmooth) {
-    // P for good, from the model's springs alone.
+    // P for good, from the model's springs alone. Its blocks are then multiples of the
+    // identity: T's are (the near-null space is the translations, I per node, and on coarser
+    // levels R = sqrt(size) I of each aggregate), and so are the Laplacian's blocks k I, hence
+    // D^-1 A's on every level. Each solve's Galerkin products then scale blocks instead of
+    // multiplying them (GalerkinProduct::compute).
     fill_laplacian();
     for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
       prepare_smoother(levels_[l]);
       smooth_prolongator(levels_[l]);
+      levels_[l].p_scale = scalar_blocks(levels_[l].p);
       levels_[l].galerkin.compute(levels_[l].a, levels_[l].p, levels_[l + 1].a);
     }
   }
@@ -259,7 +275,8 @@ bool SmoothedAggregation::update(const BlockHessian& hessian) {
   for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
     prepare_smoother(levels_[l]);
     if (options_.resmooth) smooth_prolongator(levels_[l]);
-    levels_[l].galerkin.compute(levels_[l].a, levels_[l].p, levels_[l + 1].a);
+    levels_[l].galerkin.compute(levels_[l].a, levels_[l].p, levels_[l + 1].a,
+                                levels_[l].p_scale.empty() ? nullptr : &levels_[l].p_scale);
     if (options_.coarse_couplings) {
       levels_[l].coupling.restrict_to(levels_[l].p, levels_[l + 1].coupling, levels_[l + 1].a,
                                       levels_[l + 1].diagonal);

@@ -74,6 +74,7 @@ class SmoothedAggregation {
     std::vector<int> aggregate;              // per node, -1 when excluded (pinned)
     std::vector<Eigen::Matrix3d> tentative;  // T's block per node
     Matrix p;                                // smoothed prolongator
+    std::vector<double> p_scale;  // P's blocks as multiples of I (see scalar_blocks), or empty
     std::vector<int> smooth_target;          // per block of `a`: P block it smooths into
     GalerkinProduct<3, 3> galerkin;
     Eigen::VectorXd b, x, r;
