@@ -11,6 +11,8 @@
 
 #include <random>
 
+#include "../support/dense_blocks.h"
+
 namespace animkit {
 namespace {
 
@@ -23,14 +25,7 @@ Eigen::Matrix3d random_block(std::mt19937& rng) {
   return m;
 }
 
-Eigen::MatrixXd dense(const Matrix& m) {
-  Eigen::MatrixXd d = Eigen::MatrixXd::Zero(3 * m.block_rows, 3 * m.block_cols);
-  for (int i = 0; i < m.block_rows; ++i) {
-    for (int k = m.row_start[i]; k < m.row_start[i + 1]; ++k)
-      d.block<3, 3>(3 * i, 3 * m.column[k]) += m.values[k];
-  }
-  return d;
-}
+using testing_support::dense;
 
 // Six nodes, blocks between some of them, one pair added twice and one in both orders.
 struct Example {

@@ -12,19 +12,14 @@
 
 #include <random>
 
+#include "../support/dense_blocks.h"
+
 namespace animkit {
 namespace {
 
 using Matrix = BlockSparseMatrix<3, 3>;
 
-Eigen::MatrixXd dense(const Matrix& m) {
-  Eigen::MatrixXd d = Eigen::MatrixXd::Zero(3 * m.block_rows, 3 * m.block_cols);
-  for (int i = 0; i < m.block_rows; ++i) {
-    for (int k = m.row_start[i]; k < m.row_start[i + 1]; ++k)
-      d.block<3, 3>(3 * i, 3 * m.column[k]) += m.values[k];
-  }
-  return d;
-}
+using testing_support::dense;
 
 // A symmetric 8-node chain (each node coupled to the next two) and a prolongator onto three
 // aggregates whose rows reach one or two of them.
