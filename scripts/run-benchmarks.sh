@@ -43,6 +43,7 @@ run cloth_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=tru
 run multigrid_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 run parallel_bench
 run fast_collider_bench
+run broad_phase_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 run drape_bench --benchmark_filter='^drape/(animkit/41x41(/fast)?|bullet/41x41)/iterations'
 python3 scripts/performance-page.py "$results" docs/performance.md
 echo "wrote $results/*.json and docs/performance.md"

@@ -7,7 +7,6 @@
 #include <string>
 #include <utility>
 
-#include "../core/parallel.h"
 #include "animkit/core/validation.h"
 
 namespace animkit {
@@ -364,48 +363,6 @@ void sort_pairs(std::vector<T>& pairs, std::vector<T>& scratch, First first, Sec
   }
 }
 
-// Stage 4 over the threads: the sorted entries cut into runs of whole cells, each run's pairs
-// into its own lists, which are then joined. Each pair is reported from one cell only, and the
-// lists are sorted afterwards, so the result does not depend on the cut or the thread count.
-void collect_pairs(const HashGrid& grid, const std::vector<Box>& boxes,
-                   const std::vector<CellSpan>& spans, const std::vector<CellEntry>& entries,
-                   const PrimitiveRanges& ranges, const CollisionMesh& self, bool self_pairs,
-                   std::vector<ContactCandidates>& parts, ContactCandidates& out) {
-  const int threads = parallel::threads_for(static_cast<int>(entries.size()));
-  if (threads == 1) {
-    PairCollector(grid, boxes, spans, ranges, self, self_pairs, out)
-        .collect(entries.data(), entries.data() + entries.size());
-    return;
-  }
-  // More runs than threads, claimed one at a time: a thread held off its core by another
-  // process leaves its share to the others (thread_pool.h).
-  const int runs = 4 * threads;
-  std::vector<std::size_t> cut(runs + 1, entries.size());
-  cut[0] = 0;
-  for (int r = 1; r < runs; ++r) {
-    std::size_t at = std::max(cut[r - 1], entries.size() * r / runs);
-    while (at > cut[r - 1] && at < entries.size() && entries[at].cell == entries[at - 1].cell)
-      ++at;
-    cut[r] = at;
-  }
-  parts.resize(runs);
-  parallel::run_tasks(runs, threads, [&](int r) {
-    parts[r].clear();
-    PairCollector(grid, boxes, spans, ranges, self, self_pairs, parts[r])
-        .collect(entries.data() + cut[r], entries.data() + cut[r + 1]);
-  });
-  const auto join = [&](auto member) {
-    for (const ContactCandidates& part : parts) {
-      (out.*member).insert((out.*member).end(), (part.*member).begin(), (part.*member).end());
-    }
-  };
-  join(&ContactCandidates::vertex_triangle);
-  join(&ContactCandidates::edge_edge);
-  join(&ContactCandidates::vertex_collider_triangle);
-  join(&ContactCandidates::collider_vertex_triangle);
-  join(&ContactCandidates::edge_collider_edge);
-}
-
 }  // namespace
 
 Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCandidates& out,
@@ -423,7 +380,8 @@ Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCand
   if (boxes_.empty()) return {};
   const HashGrid grid = HashGrid::fit(boxes_, std::max(ranges.offsets[3], 1));
   fill_cells(grid, boxes_, ranges.offsets[3], spans_, entries_, scratch_);
-  collect_pairs(grid, boxes_, spans_, entries_, ranges, mesh.mesh, self_pairs, parts_, out);
+  PairCollector(grid, boxes_, spans_, ranges, mesh.mesh, self_pairs, out)
+      .collect(entries_.data(), entries_.data() + entries_.size());
   const auto vertex = [](const VertexTriangleCandidate& c) { return c.vertex; };
   const auto triangle = [](const VertexTriangleCandidate& c) { return c.triangle; };
   const auto edge_a = [](const EdgeEdgeCandidate& c) { return c.edge_a; };
