@@ -353,11 +353,14 @@ void sort_pairs(std::vector<T>& pairs, std::vector<T>& scratch, First first, Sec
     second_max = std::max(second_max, second(p));
   }
   constexpr unsigned kMask = (1u << kDigitBits) - 1;
-  for (int shift = 0; shift == 0 || (second_max >> shift) != 0; shift += kDigitBits) {
+  // Shifts 0, 11 and 22 cover every non-negative int.
+  for (int shift = 0; shift < 32 && (shift == 0 || (second_max >> shift) != 0);
+       shift += kDigitBits) {
     sort_by_digit(pairs, scratch,
                   [&](const T& p) { return (static_cast<unsigned>(second(p)) >> shift) & kMask; });
   }
-  for (int shift = 0; shift == 0 || (first_max >> shift) != 0; shift += kDigitBits) {
+  for (int shift = 0; shift < 32 && (shift == 0 || (first_max >> shift) != 0);
+       shift += kDigitBits) {
     sort_by_digit(pairs, scratch,
                   [&](const T& p) { return (static_cast<unsigned>(first(p)) >> shift) & kMask; });
   }
