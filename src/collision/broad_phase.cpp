@@ -256,12 +256,11 @@ class PairCollector {
         self_pairs_(self_pairs),
         out_(out) {}
 
-  /// The pairs of the cells whose entries are [first, last) (whole cells).
-  void collect(const CellEntry* first, const CellEntry* last) {
-    for (const CellEntry* begin = first; begin != last;) {
-      const CellEntry* end = begin;
-      while (end != last && end->cell == begin->cell) ++end;
-      collect_cell(begin, end);
+  void collect(const std::vector<CellEntry>& entries) {
+    for (std::size_t begin = 0; begin < entries.size();) {
+      std::size_t end = begin;
+      while (end < entries.size() && entries[end].cell == entries[begin].cell) ++end;
+      collect_cell(entries.data() + begin, entries.data() + end);
       begin = end;
     }
   }
@@ -383,8 +382,7 @@ Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCand
   if (boxes_.empty()) return {};
   const HashGrid grid = HashGrid::fit(boxes_, std::max(ranges.offsets[3], 1));
   fill_cells(grid, boxes_, ranges.offsets[3], spans_, entries_, scratch_);
-  PairCollector(grid, boxes_, spans_, ranges, mesh.mesh, self_pairs, out)
-      .collect(entries_.data(), entries_.data() + entries_.size());
+  PairCollector(grid, boxes_, spans_, ranges, mesh.mesh, self_pairs, out).collect(entries_);
   const auto vertex = [](const VertexTriangleCandidate& c) { return c.vertex; };
   const auto triangle = [](const VertexTriangleCandidate& c) { return c.triangle; };
   const auto edge_a = [](const EdgeEdgeCandidate& c) { return c.edge_a; };
