@@ -70,7 +70,8 @@ struct Box {
 };
 /// The grid cells a box overlaps: [lo[a], hi[a]] along each axis a.
 struct CellSpan {
-  std::array<int, 3> lo, hi;  ///< first and last cell coordinate per axis
+  std::array<int, 3> lo;  ///< first cell coordinate per axis
+  std::array<int, 3> hi;  ///< last cell coordinate per axis
 };
 
 /// A primitive (global index over both meshes' vertices, edges, triangles) in a grid cell.
