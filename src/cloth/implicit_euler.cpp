@@ -255,15 +255,19 @@ bool ImplicitEuler::next_lagging_pass(const GradientStop& stop, double& gradient
 }
 
 // Hessian and Newton direction dx: the exact Hessian first unless always projecting; redone
-// with the projected one when the solve meets negative curvature or gives no descent.
+// with the projected one (made from the exact one in place) when the solve meets negative
+// curvature or gives no descent.
 // Returns the slope grad g . dx < 0.
 double ImplicitEuler::newton_direction(double gradient_norm, double relative_gradient,
                                        IterationRecord& record, StepReport& report) {
   bool projected = options_.projection == HessianProjection::always;
   double slope = 0.0;
-  for (;;) {
+  for (bool retry = false;; retry = true) {
     auto t = StageClock::now();
-    potential_.hessian(x_, hessian_, projected);
+    if (retry)
+      potential_.project_hessian(x_, hessian_);
+    else
+      potential_.hessian(x_, hessian_, projected);
     report.ms_hessian += ms_since(t);
     t = StageClock::now();
     const bool positive = solve_newton_system(relative_gradient, record);

@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "animkit/cloth/energy_term.h"
 #include "animkit/cloth/grid_cloth.h"
 #include "animkit/cloth/hessian_pattern.h"
 
@@ -135,6 +136,48 @@ TEST_F(IncrementalPotentialTest, ProjectedHessianIsPositiveDefinite) {
   const Eigen::LLT<Eigen::MatrixXd> llt{
       Eigen::MatrixXd(hessian_at_x(/*projected=*/true).pattern.matrix)};
   EXPECT_EQ(llt.info(), Eigen::Success);
+}
+
+// A term whose Hessian blocks tell `projected` apart (one diagonal and one coupling block,
+// doubled when projected) and that says whether they may be kept for the projected retry.
+class ProjectionMarkerTerm : public EnergyTerm {
+ public:
+  explicit ProjectionMarkerTerm(bool always_psd) : always_psd_(always_psd) {}
+  std::string_view name() const override { return "marker"; }
+  double value(const Eigen::VectorXd& /*x*/) const override { return 0.0; }
+  void add_gradient(const Eigen::VectorXd& /*x*/, Eigen::VectorXd& /*gradient*/) const override {}
+  void add_hessian(const Eigen::VectorXd& /*x*/, bool projected,
+                   std::vector<HessianBlock>& blocks) const override {
+    const double scale = projected && !always_psd_ ? 2.0 : 1.0;
+    blocks.push_back({1, 1, scale * 0.3 * Eigen::Matrix3d::Identity()});
+    blocks.push_back({1, 6, scale * 0.1 * Eigen::Matrix3d::Ones()});
+  }
+  bool hessian_is_always_psd() const override { return always_psd_; }
+
+ private:
+  bool always_psd_;
+};
+
+// Newton's retry turns the exact Hessian into the projected one in place: the same bits as
+// assembling the projected one, whether the terms' blocks are kept or redone.
+TEST_F(IncrementalPotentialTest, ProjectingInPlaceGivesTheProjectedHessian) {
+  for (const bool always_psd : {true, false}) {
+    IncrementalPotential g(model);
+    g.add_term(std::make_shared<ProjectionMarkerTerm>(always_psd));
+    g.prepare(state, h);
+    BlockHessian in_place(model), assembled(model);
+    g.hessian(x, in_place, false);
+    g.project_hessian(x, in_place);
+    g.hessian(x, assembled, true);
+    EXPECT_EQ(in_place.diagonal, assembled.diagonal) << always_psd;
+    EXPECT_EQ(in_place.coupling, assembled.coupling) << always_psd;
+    ASSERT_EQ(in_place.extra.size(), assembled.extra.size());
+    for (std::size_t k = 0; k < in_place.extra.size(); ++k)
+      EXPECT_EQ(in_place.extra[k].value, assembled.extra[k].value) << always_psd;
+    BlockHessian exact(model);
+    g.hessian(x, exact, false);
+    EXPECT_NE(exact.coupling, assembled.coupling);  // some springs are compressed at x
+  }
 }
 
 TEST_F(IncrementalPotentialTest, DifferenceIsTheChangeOfG) {

@@ -92,6 +92,10 @@ class IncrementalPotential {
   /// semidefinite (see spring_energy.h), so the matrix is SPD; the exact one may be indefinite
   /// where springs are compressed.
   void hessian(const Eigen::VectorXd& x, BlockHessian& blocks, bool projected) const;
+  /// `blocks`, holding hessian(x, blocks, false), made the projected Hessian at the same x.
+  /// When every term's Hessian is PSD as it is, only the springs' blocks are redone and the
+  /// terms' blocks kept (the same bits as hessian(x, blocks, true)); otherwise all of it.
+  void project_hessian(const Eigen::VectorXd& x, BlockHessian& blocks) const;
 
  private:
   const ClothModel& model_;
@@ -103,6 +107,7 @@ class IncrementalPotential {
   std::vector<std::shared_ptr<EnergyTerm>> terms_;
   mutable std::vector<HessianBlock> term_blocks_;  // scratch of hessian(), kept for its capacity
 
+  void spring_hessian(const Eigen::VectorXd& x, BlockHessian& blocks, bool projected) const;
   void add_term_hessians(const Eigen::VectorXd& x, BlockHessian& blocks, bool projected) const;
   ElementSchedule spring_schedule_, bend_schedule_;
   std::vector<double> bend_coupling_;  // per spring: the bends' constant K (times I), summed
