@@ -1,8 +1,15 @@
 #include "animkit/cloth/block_hessian.h"
 
+#include <atomic>
+
 #include "../core/parallel.h"
 
 namespace animkit {
+
+void BlockHessian::renew_terms_revision() {
+  static std::atomic<std::uint64_t> last{0};
+  terms_revision = ++last;
+}
 
 void BlockHessian::multiply(const ClothModel& model, const Eigen::VectorXd& p,
                             Eigen::VectorXd& y) const {

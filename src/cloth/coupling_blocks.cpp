@@ -71,11 +71,12 @@ void CouplingBlocks::assemble() {
   }
 }
 
-void CouplingBlocks::restrict_to(const Matrix& p, CouplingBlocks& coarse, Matrix& coarse_a,
-                                 const std::vector<int>& coarse_diagonal) const {
+void CouplingBlocks::restrict_to(const Matrix& p, CouplingBlocks& coarse,
+                                 std::vector<DiagonalPart>& within) const {
   // (P^T E P)_cd = sum over blocks B_ij of E of P_ic^T B_ij P_jd; E holds B_ij and B_ij^T at
   // (j, i), so each upper block gives X = P_ic^T B P_jd at (c, d) and X^T at (d, c).
   coarse.clear(p.block_cols);
+  within.clear();
   for (const Entry& e : upper_) {
     for (int q = p.row_start[e.row]; q < p.row_start[e.row + 1]; ++q) {
       const int c = p.column[q];
@@ -84,7 +85,7 @@ void CouplingBlocks::restrict_to(const Matrix& p, CouplingBlocks& coarse, Matrix
         const int d = p.column[t];
         const Eigen::Matrix3d x = left * p.values[t];
         if (c == d) {
-          coarse_a.values[coarse_diagonal[c]] += x + x.transpose();
+          within.push_back({c, x + x.transpose()});
         } else {
           coarse.add(c, d, x);
         }
@@ -92,6 +93,11 @@ void CouplingBlocks::restrict_to(const Matrix& p, CouplingBlocks& coarse, Matrix
     }
   }
   coarse.assemble();
+}
+
+void CouplingBlocks::add_within(const std::vector<DiagonalPart>& within, Matrix& a,
+                                const std::vector<int>& diagonal) {
+  for (const DiagonalPart& part : within) a.values[diagonal[part.node]] += part.value;
 }
 
 }  // namespace animkit

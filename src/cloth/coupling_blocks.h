@@ -35,12 +35,20 @@ class CouplingBlocks {
   const Matrix& full() const { return full_; }
   bool empty() const { return upper_.empty(); }
 
+  /// A block of P^T E P on the next level's diagonal, one of the terms that sum to it.
+  struct DiagonalPart {
+    int node;
+    Eigen::Matrix3d value;
+  };
   /// The next level's couplings P^T E P through the prolongator `p` (this level's nodes to the
   /// next's): blocks between two aggregates go into `coarse` (assembled), blocks within one
-  /// aggregate are added into the next level's operator `coarse_a` at its diagonal positions
-  /// `coarse_diagonal`.
-  void restrict_to(const Matrix& p, CouplingBlocks& coarse, Matrix& coarse_a,
-                   const std::vector<int>& coarse_diagonal) const;
+  /// aggregate into `within`, in the order the next level's operator is to add them
+  /// (add_within) after its Galerkin product.
+  void restrict_to(const Matrix& p, CouplingBlocks& coarse,
+                   std::vector<DiagonalPart>& within) const;
+  /// a's diagonal blocks (at positions `diagonal`) += `within`'s parts, in their order.
+  static void add_within(const std::vector<DiagonalPart>& within, Matrix& a,
+                         const std::vector<int>& diagonal);
 
  private:
   struct Entry {

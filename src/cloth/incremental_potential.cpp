@@ -235,6 +235,7 @@ void IncrementalPotential::spring_hessian(const Eigen::VectorXd& x, BlockHessian
 void IncrementalPotential::add_term_hessians(const Eigen::VectorXd& x, BlockHessian& blocks,
                                              bool projected) const {
   blocks.extra.clear();
+  blocks.renew_terms_revision();
   for (const auto& term : terms_) {
     term_blocks_.clear();
     term->add_hessian(x, projected, term_blocks_);

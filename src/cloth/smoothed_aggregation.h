@@ -68,6 +68,9 @@ class SmoothedAggregation {
   struct Level {
     Matrix a;                   // this level's operator (both triangles)
     CouplingBlocks coupling;    // plus these blocks outside a's pattern (contact, see there)
+    // The level above's couplings restricted into this level's diagonal blocks (not on the
+    // finest level): added into `a` after each Galerkin product.
+    std::vector<CouplingBlocks::DiagonalPart> coupling_within;
     std::vector<int> diagonal;  // position of each row's diagonal block
     std::vector<Eigen::Matrix3d> inverse_diagonal;
     // Towards the next level (absent on the coarsest):
@@ -80,7 +83,8 @@ class SmoothedAggregation {
     Eigen::VectorXd b, x, r;
   };
 
-  void fill_finest(const BlockHessian& a);
+  // keep_terms: the terms' blocks are those of the last fill (their part is kept).
+  void fill_finest(const BlockHessian& a, bool keep_terms);
   void fill_laplacian();
   void prepare_smoother(Level& level);
   void smooth_prolongator(Level& level);
@@ -101,6 +105,7 @@ class SmoothedAggregation {
   std::vector<Level> levels_;
   std::vector<Eigen::Matrix3d> term_diagonal_;  // the terms' diagonal blocks, per particle
   bool has_terms_ = false;
+  std::uint64_t terms_revision_ = 0;  // BlockHessian::terms_revision of the last update
   std::vector<std::array<int, 2>> spring_blocks_;  // per spring: positions of (a,b), (b,a)
   std::vector<int> lumped_springs_;  // the bends' coupling springs between free particles
   Eigen::MatrixXd coarsest_dense_;

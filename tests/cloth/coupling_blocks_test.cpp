@@ -71,7 +71,9 @@ TEST(CouplingBlocks, RestrictionIsTheGalerkinProduct) {
   Matrix coarse_a = block_pattern<3, 3>({{0, 1, 2}, {0, 1, 2}, {0, 1, 2}}, 3);
   std::vector<int> diagonal = {coarse_a.find(0, 0), coarse_a.find(1, 1), coarse_a.find(2, 2)};
   CouplingBlocks coarse;
-  e.blocks.restrict_to(p, coarse, coarse_a, diagonal);
+  std::vector<CouplingBlocks::DiagonalPart> within;
+  e.blocks.restrict_to(p, coarse, within);
+  CouplingBlocks::add_within(within, coarse_a, diagonal);
   const Eigen::MatrixXd expected = dense(p).transpose() * e.expected * dense(p);
   const Eigen::MatrixXd got = dense(coarse.full()) + dense(coarse_a);
   EXPECT_LE((got - expected).norm(), 1e-12 * expected.norm());

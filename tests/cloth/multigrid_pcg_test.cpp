@@ -291,6 +291,44 @@ TEST(MultigridPcg, CouplingsArePartOfTheOperatorOnEveryLevel) {
   EXPECT_EQ(result.iterations, 1);
 }
 
+// A Hessian whose terms' blocks keep their revision (Newton's projected retry changes the
+// springs' alone) keeps its couplings' restrictions: the same bits as a hierarchy built anew.
+// Under a new revision the new blocks are used; under the same one, what the first saw.
+TEST(MultigridPcg, KeepsTheCouplingsOfTheSameTermsRevision) {
+  NewtonSystem system = coupled_system(16, 1e5);
+  system.a.renew_terms_revision();
+  NewtonSystem stiffer = system;  // the springs' blocks changed, the terms' blocks kept
+  for (std::size_t s = 0; s < stiffer.model.springs.size(); ++s) {  // springs 1.5 times as stiff
+    const Eigen::Matrix3d more = 0.5 * stiffer.a.coupling[s];
+    stiffer.a.coupling[s] += more;
+    for (const int end : stiffer.model.springs[s])
+      if (!stiffer.model.pinned[end]) stiffer.a.diagonal[end] += more;
+  }
+  MultigridPcg reused(system.model), fresh(system.model);
+  const auto size = system.b.size();
+  Eigen::VectorXd x(size), kept(size), anew(size);
+  (void)reused.solve(system.a, system.b, x, 1e-5, 300);
+  const PcgResult result = reused.solve(stiffer.a, stiffer.b, kept, 1e-5, 300);
+  (void)fresh.solve(stiffer.a, stiffer.b, anew, 1e-5, 300);
+  ASSERT_TRUE(result.converged);
+  EXPECT_EQ(kept, anew);
+  // Blocks changed under the kept revision: the restrictions of the old ones stay (so a
+  // caller must renew it), and a new revision takes the new ones.
+  NewtonSystem changed = stiffer;
+  for (HessianBlock& block : changed.a.extra) {  // the couplings twice as stiff, still PSD
+    if (block.row == block.col) changed.a.diagonal[block.row] += block.value;
+    block.value *= 2.0;
+  }
+  Eigen::VectorXd stale(size), renewed(size);
+  (void)reused.solve(changed.a, changed.b, stale, 1e-5, 300);
+  changed.a.renew_terms_revision();
+  (void)reused.solve(changed.a, changed.b, renewed, 1e-5, 300);
+  MultigridPcg other(system.model);
+  (void)other.solve(changed.a, changed.b, anew, 1e-5, 300);
+  EXPECT_EQ(renewed, anew);
+  EXPECT_NE(stale, anew);
+}
+
 TEST(MultigridPcg, PreconditionerWithCouplingsIsSymmetricPositiveDefinite) {
   expect_symmetric_positive_definite(coupled_system(16, 1e6), 13);
 }

@@ -6,6 +6,7 @@
 // which lets threads share the springs with the same bits as one thread.
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "animkit/cloth/cloth_model.h"
@@ -23,6 +24,11 @@ struct BlockHessian {
   /// terms. Their diagonal blocks are also added into `diagonal`, which is all preconditioners
   /// see of them; the products, and so CG's answer, include them all.
   std::vector<HessianBlock> extra;
+  /// Names what `extra` holds: a new value, never seen before in this process, each time it is
+  /// refilled (renew_terms_revision), kept while only the springs' blocks change (Newton's
+  /// projected retry). A preconditioner that built from a revision may keep that part. 0: not
+  /// named (filled by hand), never kept.
+  std::uint64_t terms_revision = 0;
   ElementSchedule springs;  ///< the model's springs, for the products
 
   /// Sizes the arrays for `model`'s particles and springs (the step that builds the Hessian
@@ -33,6 +39,8 @@ struct BlockHessian {
         coupling(model.springs.size()),
         springs(model.springs, model.particle_count()) {}
 
+  /// Gives `extra` a new terms_revision.
+  void renew_terms_revision();
   /// y = A p for the model's springs. A pinned particle's row is the identity's, and a spring
   /// touching it acts on the free end only.
   void multiply(const ClothModel& model, const Eigen::VectorXd& p, Eigen::VectorXd& y) const;
