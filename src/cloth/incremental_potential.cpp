@@ -196,9 +196,9 @@ void IncrementalPotential::hessian(const Eigen::VectorXd& x, BlockHessian& block
 // three; keeping the contact pairs' blocks for the retry takes a fifth off the Hessian's time
 // (41 x 41, first 15 frames: 1.92 s against 2.41 s).
 void IncrementalPotential::project_hessian(const Eigen::VectorXd& x, BlockHessian& blocks) const {
-  const bool terms_always_psd = std::ranges::all_of(
-      terms_, [](const auto& term) { return term->hessian_is_always_psd(); });
-  if (!terms_always_psd) {
+  const bool terms_ignore_projection = std::ranges::all_of(
+      terms_, [](const auto& term) { return term->hessian_ignores_projection(); });
+  if (!terms_ignore_projection) {
     hessian(x, blocks, true);
     return;
   }

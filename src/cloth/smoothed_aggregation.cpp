@@ -276,6 +276,7 @@ bool SmoothedAggregation::update(const BlockHessian& hessian) {
   // alone): their couplings on every level are kept, the sums they join redone in the same
   // order. On drape-sphere 41 x 41 their sorting and restriction took 8% of the run, and two
   // updates in five are retries. A P smoothed with each matrix (resmooth) restricts anew.
+  // Kept means kept for the products too (add_term_products): see BlockHessian::terms_revision.
   const bool keep_terms = hessian.terms_revision != 0 &&
                           hessian.terms_revision == terms_revision_ && !options_.resmooth;
   terms_revision_ = hessian.terms_revision;

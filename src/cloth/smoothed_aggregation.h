@@ -68,7 +68,7 @@ class SmoothedAggregation {
   struct Level {
     Matrix a;                   // this level's operator (both triangles)
     CouplingBlocks coupling;    // plus these blocks outside a's pattern (contact, see there)
-    // The level above's couplings restricted into this level's diagonal blocks (not on the
+    // The finer level's couplings restricted into this level's diagonal blocks (not on the
     // finest level): added into `a` after each Galerkin product.
     std::vector<CouplingBlocks::DiagonalPart> coupling_within;
     std::vector<int> diagonal;  // position of each row's diagonal block

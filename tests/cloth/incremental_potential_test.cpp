@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <random>
 
 #include "animkit/cloth/energy_term.h"
@@ -142,38 +143,42 @@ TEST_F(IncrementalPotentialTest, ProjectedHessianIsPositiveDefinite) {
 // doubled when projected) and that says whether they may be kept for the projected retry.
 class ProjectionMarkerTerm : public EnergyTerm {
  public:
-  explicit ProjectionMarkerTerm(bool always_psd) : always_psd_(always_psd) {}
+  explicit ProjectionMarkerTerm(bool ignores_projection)
+      : ignores_projection_(ignores_projection) {}
   std::string_view name() const override { return "marker"; }
   double value(const Eigen::VectorXd& /*x*/) const override { return 0.0; }
   void add_gradient(const Eigen::VectorXd& /*x*/, Eigen::VectorXd& /*gradient*/) const override {}
   void add_hessian(const Eigen::VectorXd& /*x*/, bool projected,
                    std::vector<HessianBlock>& blocks) const override {
-    const double scale = projected && !always_psd_ ? 2.0 : 1.0;
+    const double scale = projected && !ignores_projection_ ? 2.0 : 1.0;
     blocks.push_back({1, 1, scale * 0.3 * Eigen::Matrix3d::Identity()});
     blocks.push_back({1, 6, scale * 0.1 * Eigen::Matrix3d::Ones()});
   }
-  bool hessian_is_always_psd() const override { return always_psd_; }
+  bool hessian_ignores_projection() const override { return ignores_projection_; }
 
  private:
-  bool always_psd_;
+  bool ignores_projection_;
 };
 
 // Newton's retry turns the exact Hessian into the projected one in place: the same bits as
 // assembling the projected one, whether the terms' blocks are kept or redone.
 TEST_F(IncrementalPotentialTest, ProjectingInPlaceGivesTheProjectedHessian) {
-  for (const bool always_psd : {true, false}) {
+  for (const bool ignores_projection : {true, false}) {
     IncrementalPotential g(model);
-    g.add_term(std::make_shared<ProjectionMarkerTerm>(always_psd));
+    g.add_term(std::make_shared<ProjectionMarkerTerm>(ignores_projection));
     g.prepare(state, h);
     BlockHessian in_place(model), assembled(model);
     g.hessian(x, in_place, false);
+    const std::uint64_t exact_revision = in_place.terms_revision;
     g.project_hessian(x, in_place);
+    // Kept blocks keep their revision (the multigrid then keeps their couplings too).
+    EXPECT_EQ(in_place.terms_revision == exact_revision, ignores_projection);
     g.hessian(x, assembled, true);
-    EXPECT_EQ(in_place.diagonal, assembled.diagonal) << always_psd;
-    EXPECT_EQ(in_place.coupling, assembled.coupling) << always_psd;
+    EXPECT_EQ(in_place.diagonal, assembled.diagonal) << ignores_projection;
+    EXPECT_EQ(in_place.coupling, assembled.coupling) << ignores_projection;
     ASSERT_EQ(in_place.extra.size(), assembled.extra.size());
     for (std::size_t k = 0; k < in_place.extra.size(); ++k)
-      EXPECT_EQ(in_place.extra[k].value, assembled.extra[k].value) << always_psd;
+      EXPECT_EQ(in_place.extra[k].value, assembled.extra[k].value) << ignores_projection;
     BlockHessian exact(model);
     g.hessian(x, exact, false);
     EXPECT_NE(exact.coupling, assembled.coupling);  // some springs are compressed at x

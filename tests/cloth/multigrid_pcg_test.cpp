@@ -246,6 +246,7 @@ void add_far_couplings(NewtonSystem& system, int cells, double k) {
       system.a.extra.push_back({a, b, -block});
     }
   }
+  system.a.renew_terms_revision();
 }
 
 Eigen::VectorXd dense_solve(const NewtonSystem& system) {
@@ -291,42 +292,61 @@ TEST(MultigridPcg, CouplingsArePartOfTheOperatorOnEveryLevel) {
   EXPECT_EQ(result.iterations, 1);
 }
 
-// A Hessian whose terms' blocks keep their revision (Newton's projected retry changes the
-// springs' alone) keeps its couplings' restrictions: the same bits as a hierarchy built anew.
-// Under a new revision the new blocks are used; under the same one, what the first saw.
-TEST(MultigridPcg, KeepsTheCouplingsOfTheSameTermsRevision) {
-  NewtonSystem system = coupled_system(16, 1e5);
-  system.a.renew_terms_revision();
-  NewtonSystem stiffer = system;  // the springs' blocks changed, the terms' blocks kept
-  for (std::size_t s = 0; s < stiffer.model.springs.size(); ++s) {  // springs 1.5 times as stiff
-    const Eigen::Matrix3d more = 0.5 * stiffer.a.coupling[s];
-    stiffer.a.coupling[s] += more;
-    for (const int end : stiffer.model.springs[s])
-      if (!stiffer.model.pinned[end]) stiffer.a.diagonal[end] += more;
+// The same system with every spring 1.5 times as stiff: the springs' blocks change, the terms'
+// blocks and their revision stay (what Newton's projected retry does).
+NewtonSystem with_stiffer_springs(NewtonSystem system) {
+  for (std::size_t s = 0; s < system.model.springs.size(); ++s) {
+    const Eigen::Matrix3d more = 0.5 * system.a.coupling[s];
+    system.a.coupling[s] += more;
+    for (const int end : system.model.springs[s])
+      if (!system.model.pinned[end]) system.a.diagonal[end] += more;
   }
-  MultigridPcg reused(system.model), fresh(system.model);
-  const auto size = system.b.size();
-  Eigen::VectorXd x(size), kept(size), anew(size);
-  (void)reused.solve(system.a, system.b, x, 1e-5, 300);
-  const PcgResult result = reused.solve(stiffer.a, stiffer.b, kept, 1e-5, 300);
-  (void)fresh.solve(stiffer.a, stiffer.b, anew, 1e-5, 300);
-  ASSERT_TRUE(result.converged);
-  EXPECT_EQ(kept, anew);
-  // Blocks changed under the kept revision: the restrictions of the old ones stay (so a
-  // caller must renew it), and a new revision takes the new ones.
-  NewtonSystem changed = stiffer;
-  for (HessianBlock& block : changed.a.extra) {  // the couplings twice as stiff, still PSD
-    if (block.row == block.col) changed.a.diagonal[block.row] += block.value;
+  return system;
+}
+
+// The terms' couplings twice as stiff (still PSD), under the same revision: what a caller
+// that forgot to renew it would pass.
+NewtonSystem with_stiffer_couplings(NewtonSystem system) {
+  for (HessianBlock& block : system.a.extra) {
+    if (block.row == block.col) system.a.diagonal[block.row] += block.value;
     block.value *= 2.0;
   }
-  Eigen::VectorXd stale(size), renewed(size);
-  (void)reused.solve(changed.a, changed.b, stale, 1e-5, 300);
-  changed.a.renew_terms_revision();
-  (void)reused.solve(changed.a, changed.b, renewed, 1e-5, 300);
-  MultigridPcg other(system.model);
-  (void)other.solve(changed.a, changed.b, anew, 1e-5, 300);
-  EXPECT_EQ(renewed, anew);
-  EXPECT_NE(stale, anew);
+  return system;
+}
+
+// A Hessian whose terms' blocks keep their revision keeps their couplings' restrictions: the
+// same bits as a hierarchy built anew. Under the same revision the first blocks stay in use
+// (so whoever changes them must renew it); a new revision takes the new ones. A prolongator
+// smoothed with each matrix (resmooth) restricts them anew every time.
+TEST(MultigridPcg, KeepsTheCouplingsOfTheSameTermsRevision) {
+  const NewtonSystem system = coupled_system(16, 1e5);
+  const NewtonSystem stiffer = with_stiffer_springs(system);
+  NewtonSystem changed = with_stiffer_couplings(stiffer);
+  const auto size = system.b.size();
+  for (const bool resmooth : {false, true}) {
+    SCOPED_TRACE(resmooth ? "resmooth" : "fixed prolongators");
+    const MultigridOptions options{.resmooth = resmooth};
+    MultigridPcg reused(system.model, options), fresh(system.model, options),
+        other(system.model, options);
+    Eigen::VectorXd first(size), kept(size), expected(size);
+    (void)reused.solve(system.a, system.b, first, 1e-5, 300);
+    const PcgResult result = reused.solve(stiffer.a, stiffer.b, kept, 1e-5, 300);
+    (void)fresh.solve(stiffer.a, stiffer.b, expected, 1e-5, 300);
+    ASSERT_TRUE(result.converged);
+    EXPECT_EQ(kept, expected);
+
+    Eigen::VectorXd stale(size), renewed(size), expected_changed(size);
+    changed.a.terms_revision = stiffer.a.terms_revision;
+    (void)reused.solve(changed.a, changed.b, stale, 1e-5, 300);
+    changed.a.renew_terms_revision();
+    (void)reused.solve(changed.a, changed.b, renewed, 1e-5, 300);
+    (void)other.solve(changed.a, changed.b, expected_changed, 1e-5, 300);
+    EXPECT_EQ(renewed, expected_changed);
+    if (resmooth)
+      EXPECT_EQ(stale, expected_changed);
+    else
+      EXPECT_NE(stale, expected_changed);
+  }
 }
 
 TEST(MultigridPcg, PreconditionerWithCouplingsIsSymmetricPositiveDefinite) {

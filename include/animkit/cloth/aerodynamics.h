@@ -65,7 +65,7 @@ class AirTerm final : public EnergyTerm {
   void add_gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const override;
   void add_hessian(const Eigen::VectorXd& x, bool projected,
                    std::vector<HessianBlock>& blocks) const override;
-  bool hessian_is_always_psd() const override { return true; }
+  bool hessian_ignores_projection() const override { return true; }
 
   /// The time the last prepared substep ends at (s since the start).
   double time() const { return time_; }

@@ -26,8 +26,9 @@ struct BlockHessian {
   std::vector<HessianBlock> extra;
   /// Names what `extra` holds: a new value, never seen before in this process, each time it is
   /// refilled (renew_terms_revision), kept while only the springs' blocks change (Newton's
-  /// projected retry). A preconditioner that built from a revision may keep that part. 0: not
-  /// named (filled by hand), never kept.
+  /// projected retry). The multigrid keeps what it built from `extra` while the revision is the
+  /// one it saw last, products included: whoever changes `extra` must renew it (a copy keeps
+  /// it too). 0, a Hessian never named: nothing is kept.
   std::uint64_t terms_revision = 0;
   ElementSchedule springs;  ///< the model's springs, for the products
 

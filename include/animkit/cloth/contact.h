@@ -170,7 +170,7 @@ class ContactTerm final : public EnergyTerm {
   void add_gradient(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const override;
   void add_hessian(const Eigen::VectorXd& x, bool projected,
                    std::vector<HessianBlock>& blocks) const override;
-  bool hessian_is_always_psd() const override { return true; }
+  bool hessian_ignores_projection() const override { return true; }
 
   /// False while a collider is short of its pose at the substep's end (CCD held it back).
   bool settled() const override;

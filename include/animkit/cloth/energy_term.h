@@ -89,10 +89,10 @@ class EnergyTerm {
   /// positive semidefinite as a whole (Newton's fallback when the exact Hessian is indefinite).
   virtual void add_hessian(const Eigen::VectorXd& x, bool projected,
                            std::vector<HessianBlock>& blocks) const = 0;
-  /// True when add_hessian appends the same PSD blocks whether `projected` or not: Newton's
-  /// projected retry then keeps this term's blocks from the exact attempt instead of
-  /// recomputing them.
-  virtual bool hessian_is_always_psd() const { return false; }
+  /// True when add_hessian appends the same blocks, to the bit, whether `projected` or not
+  /// (they are PSD as they are): Newton's projected retry then keeps this term's blocks from
+  /// the exact attempt instead of recomputing them.
+  virtual bool hessian_ignores_projection() const { return false; }
 };
 
 }  // namespace animkit

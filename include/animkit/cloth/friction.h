@@ -80,7 +80,7 @@ class FrictionTerm final : public EnergyTerm {
   /// The exact Hessian, PSD as it is (`projected` changes nothing).
   void add_hessian(const Eigen::VectorXd& x, bool projected,
                    std::vector<HessianBlock>& blocks) const override;
-  bool hessian_is_always_psd() const override { return true; }
+  bool hessian_ignores_projection() const override { return true; }
 
   /// The pairs and normal forces of the last lag, and the passes so far.
   FrictionStats stats() const;

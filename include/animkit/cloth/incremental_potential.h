@@ -92,9 +92,11 @@ class IncrementalPotential {
   /// semidefinite (see spring_energy.h), so the matrix is SPD; the exact one may be indefinite
   /// where springs are compressed.
   void hessian(const Eigen::VectorXd& x, BlockHessian& blocks, bool projected) const;
-  /// `blocks`, holding hessian(x, blocks, false), made the projected Hessian at the same x.
-  /// When every term's Hessian is PSD as it is, only the springs' blocks are redone and the
-  /// terms' blocks kept (the same bits as hessian(x, blocks, true)); otherwise all of it.
+  /// `blocks`, holding this potential's hessian(x, blocks, false), made the projected Hessian at
+  /// the same x. When no term's blocks depend on the projection
+  /// (EnergyTerm::hessian_ignores_projection), only the springs' blocks are redone, the terms'
+  /// blocks and their BlockHessian::terms_revision kept (the same bits as hessian(x, blocks,
+  /// true)); otherwise all of it, under a new revision.
   void project_hessian(const Eigen::VectorXd& x, BlockHessian& blocks) const;
 
  private:

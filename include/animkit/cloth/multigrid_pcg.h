@@ -39,7 +39,9 @@ class MultigridPcg {
   ~MultigridPcg();
 
   /// Solves A x = b for the SPD matrix in `a`, from x = 0, until |b - A x| <= tolerance |b|,
-  /// `max_iterations`, or a direction of non-positive curvature (see PcgResult).
+  /// `max_iterations`, or a direction of non-positive curvature (see PcgResult). The energy
+  /// terms' blocks (`a.extra`) are taken anew only under a new BlockHessian::terms_revision:
+  /// under the last solve's, those of that solve are used.
   PcgResult solve(const BlockHessian& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                   double tolerance, int max_iterations);
   /// Refines the last solve's answer x of A x = b to the tighter `tolerance`, going on from x
