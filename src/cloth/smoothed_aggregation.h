@@ -33,9 +33,10 @@
 // nodes over the threads (hybrid Gauss-Seidel): Gauss-Seidel within a chunk, the other chunks'
 // values from before the sweep. The chunks depend on the level's size alone, so the bits do
 // not depend on the thread count. Each coupling B across chunks adds half of (B B^T)^(1/2) to
-// its row's diagonal block (an l1 smoother after Baker, Falgout, Kolev & Yang, "Multigrid
-// smoothers for ultraparallel computing", SIAM J. Sci. Comput. 2011), which keeps the sweep
-// convergent and, with the backward sweep its transpose, the cycle SPD.
+// its row's diagonal block, a variant of the l1 smoother of Baker, Falgout, Kolev & Yang
+// ("Multigrid smoothers for ultraparallel computing", SIAM J. Sci. Comput. 2011, which adds
+// the off-processor row sums |a_ij|): M + M^T - A is then the diagonal plus a PSD matrix per
+// coupling, so the sweep converges and, with the backward sweep its transpose, the cycle is SPD.
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <vector>
@@ -108,18 +109,22 @@ class SmoothedAggregation {
   // The level's couplings the V-cycle uses (MultigridOptions::coarse_couplings), or none.
   const Matrix* couplings(const Level& level) const;
   // from_zero: level.x is zero, so only the columns before each row carry values (the later
-  // ones are still zero and would add nothing): half the products of a sweep.
+  // ones are still zero and would add nothing): half the products of a sweep. In chunks
+  // (Level::in_chunks), the columns before each row within its own chunk.
   void forward_sweep(Level& level, bool from_zero);
   void backward_sweep(Level& level);
   void forward_sweep_chunked(Level& level, bool from_zero);
   void backward_sweep_chunked(Level& level);
   // sweep_inverse: the diagonal blocks with the l1 term of the blocks across chunks, inverted.
   void prepare_chunked_smoother(Level& level);
-  void correct(Level& level, int i, const Eigen::Vector3d& rest, bool from_zero);
-  void residual_after_chunked_sweep(Level& level);
+  // Node i of a hybrid sweep: x_i += S_i^-1 (b - A x)_i, where `rest` is b_i less the row's
+  // products off the diagonal and S_i the diagonal block with the l1 term.
+  void relax_row(Level& level, int i, const Eigen::Vector3d& rest, bool from_zero);
   // r = b - A x after a single forward sweep from zero, which left (b - L x)_i in r: the
-  // diagonal and upper triangle remain, about half a product.
+  // diagonal and upper triangle remain, about half a product. In chunks, L is the lower
+  // triangle within each chunk, and the earlier chunks' columns remain too.
   void residual_after_sweep(Level& level);
+  void residual_after_chunked_sweep(Level& level);
   void cycle(std::size_t l);
 
   const ClothModel& model_;

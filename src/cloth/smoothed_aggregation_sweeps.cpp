@@ -5,10 +5,9 @@
 
 namespace animkit {
 
-// x_i += S_i^-1 (b - A x)_i, `rest` being b_i less the row's products off the diagonal: the
-// residual form, since S_i (the diagonal with the l1 term) is not A's diagonal block (written
-// as x_i = S_i^-1 rest, the sweep would converge to the solution of another system).
-void SmoothedAggregation::correct(Level& level, int i, const Eigen::Vector3d& rest,
+// The residual form, since S_i (the diagonal with the l1 term) is not A's diagonal block:
+// written as x_i = S_i^-1 rest, the sweep would converge to the solution of another system.
+void SmoothedAggregation::relax_row(Level& level, int i, const Eigen::Vector3d& rest,
                                   bool from_zero) {
   auto x = level.x.segment<3>(3 * i);
   if (from_zero) {
@@ -40,7 +39,7 @@ void SmoothedAggregation::forward_sweep_chunked(Level& level, bool from_zero) {
         }
       }
       level.r.segment<3>(3 * i) = sum;  // for residual_after_sweep
-      correct(level, i, sum, from_zero);
+      relax_row(level, i, sum, from_zero);
     }
   });
 }
@@ -59,7 +58,7 @@ void SmoothedAggregation::backward_sweep_chunked(Level& level) {
         const bool inside = j >= first && j < end;
         sum.noalias() -= a.values[k] * (inside ? level.x : level.x_before).segment<3>(3 * j);
       }
-      correct(level, i, sum, false);
+      relax_row(level, i, sum, false);
     }
   });
 }

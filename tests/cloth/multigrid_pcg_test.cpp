@@ -421,8 +421,8 @@ TEST(BlockJacobiPcg, RefiningALooseAnswerGoesOnFromIt) {
   expect_refining_goes_on_from_the_answer<BlockJacobiPcg>(hanging_system(cotton(16, 1e4), 10));
 }
 
-// Hybrid sweeps (MultigridOptions::sweep_chunk_nodes): a 17 x 17 grid (289 nodes) in chunks of
-// about 64 nodes sweeps four chunks on the finest level.
+// Hybrid sweeps (MultigridOptions::sweep_chunk_nodes): a 17 x 17 grid (289 nodes) with a
+// chunk size of 64 sweeps four chunks of 72 or 73 nodes on the finest level.
 constexpr MultigridOptions kFourChunks{.sweep_chunk_nodes = 64};
 
 Eigen::VectorXd solve_with(const NewtonSystem& system, const MultigridOptions& options) {
@@ -432,14 +432,20 @@ Eigen::VectorXd solve_with(const NewtonSystem& system, const MultigridOptions& o
   return x;
 }
 
+// Two sweeps each way: the second forward sweep starts from the first's values.
+constexpr MultigridOptions kFourChunksTwoSweeps{.smoothing_sweeps = 2, .sweep_chunk_nodes = 64};
+
 TEST(MultigridPcg, HybridSweepsMatchTheDirectSolve) {
   expect_matches_direct_solve(hanging_system(cotton(16, 1e4), 10), kFourChunks);
   expect_matches_direct_solve(hanging_system(stiff_bending_sheet(), 10), kFourChunks);
+  expect_matches_direct_solve(hanging_system(cotton(16, 1e4), 10), kFourChunksTwoSweeps);
 }
 
 TEST(MultigridPcg, HybridSweepsKeepThePreconditionerSymmetricPositiveDefinite) {
   expect_symmetric_positive_definite(hanging_system(cotton(16, 1e4), 10), 19, kFourChunks);
   expect_symmetric_positive_definite(hanging_system(stiff_bending_sheet(), 10), 23, kFourChunks);
+  expect_symmetric_positive_definite(hanging_system(cotton(16, 1e4), 10), 29,
+                                     kFourChunksTwoSweeps);
 }
 
 // The chunks depend on the level's size alone: one, two and three threads give the same bits.
@@ -464,6 +470,7 @@ TEST(MultigridPcg, HybridSweepsGiveTheSameBitsOnAnyThreadCount) {
 // weaker smoother (smoothed_aggregation.cpp).
 TEST(MultigridPcg, HybridSweepsOnlyForTheClothAlone) {
   const NewtonSystem system = coupled_system(16, 1e5);
+  ASSERT_FALSE(system.a.extra.empty());
   EXPECT_EQ(solve_with(system, kFourChunks), solve_with(system, {.sweep_chunk_nodes = 0}));
 }
 
