@@ -1,7 +1,8 @@
 // Speedup of the parallel loops (src/core/parallel.h): the same work with 1 and 2 threads in
 // one run, on the lab's cloth at 256 x 256 and the cotton sheet at 101 x 101. Kernels (the
 // incremental potential's gradient, the Hessian's assembly, a Hessian-vector product) and whole
-// steps of the implicit integrators, each to a relative gradient of 1e-2 (visually converged).
+// steps of the implicit integrators (multigrid included), each to a relative gradient of 1e-2
+// (visually converged).
 // Results are the same bits for both thread counts, so both time the same iterations. Run with
 // --benchmark_repetitions=5: the ratios then compare medians.
 #include <benchmark/benchmark.h>
@@ -63,6 +64,11 @@ void step(benchmark::State& state, std::string_view integrator) {
 
 void BM_StepImplicitPcg(benchmark::State& state) {
   step(state, "implicit-pcg");
+}
+// The default for physical sheets: its V-cycle sweeps sheets of 4,096 particles or more in
+// chunks over the threads (smoothed_aggregation.h).
+void BM_StepImplicitMultigrid(benchmark::State& state) {
+  step(state, "implicit-multigrid");
 }
 void BM_StepVbd(benchmark::State& state) {
   step(state, "vbd");
@@ -132,6 +138,7 @@ BENCHMARK(BM_Gradient)->Apply(kernel_args);
 BENCHMARK(BM_Hessian)->Apply(kernel_args);
 BENCHMARK(BM_Multiply)->Apply(kernel_args);
 BENCHMARK(BM_StepImplicitPcg)->Apply(step_args);
+BENCHMARK(BM_StepImplicitMultigrid)->Apply(step_args);
 BENCHMARK(BM_StepVbd)->Apply(step_args);
 BENCHMARK(BM_StepLocalGlobal)->Apply(step_args);
 
@@ -142,7 +149,7 @@ int main(int argc, char** argv) {
   animkit::bench::RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   for (const char* name : {"BM_Gradient", "BM_Hessian", "BM_Multiply", "BM_StepImplicitPcg",
-                           "BM_StepVbd", "BM_StepLocalGlobal"}) {
+                           "BM_StepImplicitMultigrid", "BM_StepVbd", "BM_StepLocalGlobal"}) {
     for (long scene : {kLab256, kCotton}) {
       const std::string base = std::string(name) + "/scene:" + std::to_string(scene);
       reporter.print_ratio(base + "/threads:1", base + "/threads:2", "time",
