@@ -34,7 +34,7 @@ Matrix3 inverse_block(const Matrix3& block) {
 // -B; -B^T, (B^T B)^(1/2)] is positive semidefinite (polar decomposition), so half of it on
 // each end of every coupling across chunks keeps a hybrid sweep convergent: the sweep's
 // M + M^T - A is then the diagonal plus those PSD matrices (for a spring's symmetric block K
-// it is |K|, which adds nothing across the spring, where the cloth is soft).
+// it is |K|, which adds nothing transverse to the spring, where the cloth is soft).
 Matrix3 block_magnitude(const Matrix3& block) {
   Eigen::SelfAdjointEigenSolver<Matrix3> eigen;
   eigen.computeDirect(block * block.transpose());
