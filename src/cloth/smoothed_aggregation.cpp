@@ -324,13 +324,9 @@ bool SmoothedAggregation::update(const BlockHessian& hessian) {
     }
   }
   prepare_smoother(levels_.back());
-  // Chunks only for the cloth alone, without an energy term's blocks (so no level holds
-  // couplings, which the chunked sweeps leave out): with contact the hybrid sweep was the
-  // weaker smoother (drape-sphere 101 x 101, frame 5: twice the CG iterations, 1.7 times as
-  // many a Newton iteration, with chunks taken even where self-contact coupled them).
+  // The l1 term follows the couplings, which change with the terms' blocks: every update.
   for (Level& level : levels_) {
-    level.in_chunks = level.chunk_start.size() > 2 && !has_terms_;
-    if (level.in_chunks) prepare_chunked_smoother(level);
+    if (level.chunk_start.size() > 2) prepare_chunked_smoother(level);
   }
   return factorize_coarsest();
 }
@@ -343,11 +339,16 @@ const SmoothedAggregation::Matrix* SmoothedAggregation::couplings(const Level& l
 
 void SmoothedAggregation::prepare_chunked_smoother(Level& level) {
   const Matrix& a = level.a;
+  const Matrix* e = couplings(level);
   parallel::for_each(a.block_rows, [&](int i) {
     Matrix3 diagonal = a.values[level.diagonal[i]];
-    for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
-      if (level.chunk_of[a.column[k]] != level.chunk_of[i])
-        diagonal += 0.5 * block_magnitude(a.values[k]);
+    const auto add_across = [&](int j, const Matrix3& block) {
+      if (level.chunk_of[j] != level.chunk_of[i]) diagonal += 0.5 * block_magnitude(block);
+    };
+    for (int k = a.row_start[i]; k < a.row_start[i + 1]; ++k) add_across(a.column[k], a.values[k]);
+    if (e != nullptr) {
+      for (int k = e->row_start[i]; k < e->row_start[i + 1]; ++k)
+        add_across(e->column[k], e->values[k]);
     }
     level.sweep_inverse[i] = inverse_block(diagonal);
   });

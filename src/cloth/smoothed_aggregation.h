@@ -29,14 +29,14 @@
 // operator, as CG needs. After a single forward sweep from zero, the residual it passes down
 // needs only the diagonal and upper triangle (residual_after_sweep).
 //
-// A large level of the cloth alone (no energy term's blocks) is swept in chunks of consecutive
-// nodes over the threads (hybrid Gauss-Seidel): Gauss-Seidel within a chunk, the other chunks'
-// values from before the sweep. The chunks depend on the level's size alone, so the bits do
-// not depend on the thread count. Each coupling B across chunks adds half of (B B^T)^(1/2) to
-// its row's diagonal block, a variant of the l1 smoother of Baker, Falgout, Kolev & Yang
-// ("Multigrid smoothers for ultraparallel computing", SIAM J. Sci. Comput. 2011, which adds
-// the off-processor row sums |a_ij|): M + M^T - A is then the diagonal plus a PSD matrix per
-// coupling, so the sweep converges and, with the backward sweep its transpose, the cycle is SPD.
+// A large level is swept in chunks of consecutive nodes over the threads (hybrid Gauss-Seidel):
+// Gauss-Seidel within a chunk, the other chunks' values from before the sweep. The chunks depend
+// on the level's size alone, so the bits do not depend on the thread count. Each coupling B across
+// chunks adds half of (B B^T)^(1/2) to its row's diagonal block, a variant of the l1 smoother of
+// Baker, Falgout, Kolev & Yang ("Multigrid smoothers for ultraparallel computing", SIAM J. Sci.
+// Comput. 2011, which adds the off-processor row sums |a_ij|): M + M^T - A is then the diagonal
+// plus a PSD matrix per coupling, so the sweep converges and, with the backward sweep its
+// transpose, the cycle is SPD.
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <vector>
@@ -89,7 +89,7 @@ class SmoothedAggregation {
     std::vector<int> chunk_of;  // per node
     std::vector<Eigen::Matrix3d> sweep_inverse;
     Eigen::VectorXd x_before;
-    bool in_chunks = false;  // this update's sweeps: see update()
+    bool in_chunks() const { return chunk_start.size() > 2; }
     // Towards the next level (absent on the coarsest):
     std::vector<int> aggregate;              // per node, -1 when excluded (pinned)
     std::vector<Eigen::Matrix3d> tentative;  // T's block per node
@@ -110,7 +110,7 @@ class SmoothedAggregation {
   const Matrix* couplings(const Level& level) const;
   // from_zero: level.x is zero, so only the columns before each row carry values (the later
   // ones are still zero and would add nothing): half the products of a sweep. In chunks
-  // (Level::in_chunks), the columns before each row within its own chunk.
+  // (Level::in_chunks()), the columns before each row within its own chunk.
   void forward_sweep(Level& level, bool from_zero);
   void backward_sweep(Level& level);
   void forward_sweep_chunked(Level& level, bool from_zero);

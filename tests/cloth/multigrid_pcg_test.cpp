@@ -466,12 +466,16 @@ TEST(MultigridPcg, HybridSweepsGiveTheSameBitsOnAnyThreadCount) {
   EXPECT_EQ(solve_with(system, {.sweep_chunk_nodes = 145}), whole);  // under two chunks
 }
 
-// An energy term's blocks (contact) keep the whole sweep: with them the hybrid one was the
-// weaker smoother (smoothed_aggregation.cpp).
-TEST(MultigridPcg, HybridSweepsOnlyForTheClothAlone) {
+// Couplings across the chunks (a cloth folded onto itself): the hybrid sweeps take them as
+// their own blocks, with the l1 term.
+TEST(MultigridPcg, HybridSweepsTakeTheTermsCouplings) {
   const NewtonSystem system = coupled_system(16, 1e5);
   ASSERT_FALSE(system.a.extra.empty());
-  EXPECT_EQ(solve_with(system, kFourChunks), solve_with(system, {.sweep_chunk_nodes = 0}));
+  const Eigen::VectorXd x = solve_with(system, kFourChunks);
+  const Eigen::VectorXd expected = dense_solve(system);
+  EXPECT_LE((x - expected).norm(), 1e-6 * expected.norm());
+  EXPECT_NE(x, solve_with(system, {.sweep_chunk_nodes = 0}));  // the chunks did sweep
+  expect_symmetric_positive_definite(coupled_system(16, 1e6), 31, kFourChunks);
 }
 
 }  // namespace

@@ -30,8 +30,7 @@ struct MultigridOptions {
   /// A level of at least twice this many nodes (N) is swept in chunks of N to 2N - 1
   /// consecutive nodes, each a Gauss-Seidel sweep of its own that reads the other chunks'
   /// values from before the sweep (hybrid Gauss-Seidel), so the chunks run on separate threads
-  /// with the same bits on any number of threads; only while the matrix has no energy term's
-  /// blocks (BlockHessian::extra; contact is swept whole). 0: one sweep over the whole level.
+  /// with the same bits on any number of threads. 0: one sweep over the whole level.
   int sweep_chunk_nodes = 2048;
 };
 
