@@ -8,7 +8,7 @@ namespace animkit {
 // The residual form, since S_i (the diagonal with the l1 term) is not A's diagonal block:
 // written as x_i = S_i^-1 rest, the sweep would converge to the solution of another system.
 void SmoothedAggregation::relax_row(Level& level, int i, const Eigen::Vector3d& rest,
-                                  bool from_zero) {
+                                    bool from_zero) {
   auto x = level.x.segment<3>(3 * i);
   if (from_zero) {
     x.noalias() = level.sweep_inverse[i] * rest;
