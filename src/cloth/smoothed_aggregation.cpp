@@ -313,7 +313,10 @@ bool SmoothedAggregation::update(const BlockHessian& hessian) {
   fill_finest(hessian, keep_terms);
   for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
     Level& coarse = levels_[l + 1];
-    prepare_smoother(levels_[l]);
+    // A chunked level's sweeps use sweep_inverse (its couplings are final here): the plain
+    // inverses only where the sweeps or the prolongator's smoothing need them.
+    if (levels_[l].in_chunks()) prepare_chunked_smoother(levels_[l]);
+    if (!levels_[l].in_chunks() || options_.resmooth) prepare_smoother(levels_[l]);
     if (options_.resmooth) smooth_prolongator(levels_[l]);
     levels_[l].galerkin.compute(levels_[l].a, levels_[l].p, coarse.a,
                                 levels_[l].p_scale.empty() ? nullptr : &levels_[l].p_scale);
@@ -324,10 +327,6 @@ bool SmoothedAggregation::update(const BlockHessian& hessian) {
     }
   }
   prepare_smoother(levels_.back());
-  // The l1 term follows the couplings, which change with the terms' blocks: every update.
-  for (Level& level : levels_) {
-    if (level.chunk_start.size() > 2) prepare_chunked_smoother(level);
-  }
   return factorize_coarsest();
 }
 
