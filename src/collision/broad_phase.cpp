@@ -114,13 +114,10 @@ void build_boxes(const MeshMotion& mesh, const MeshMotion* collider, double radi
   }
 }
 
-// Stage 2: the uniform grid. Origin at the lower corner of all boxes; cell size the mean size
-// of the mesh's boxes, doubled while a cell key would need more than 20 bits per axis or the
-// boxes would fill more than 16 cells each on average (which bounds the work by the number of
-// boxes). The mesh's boxes alone, because every wanted pair holds a mesh primitive: a finely
-// tessellated collider's many small boxes made the cells small, and the mesh's boxes, swept
-// along Newton's steps, then filled 230 cells each (a 5 x 5 sheet hit by a ball of 1,280
-// triangles: 75% of the entries were the sheet's 113 boxes).
+// Stage 2: the uniform grid, over the mesh's boxes alone (the collider's pairs come from its
+// box trees, stage 5). Origin at their lower corner; cell size their mean size, doubled while a
+// cell key would need more than 20 bits per axis or the boxes would fill more than 16 cells each
+// on average (which bounds the work by the number of boxes).
 struct HashGrid {
   Vec3 origin = Vec3::Zero();
   double cell = 1.0;
@@ -144,33 +141,30 @@ struct HashGrid {
     return n;
   }
 
-  // `sized` (>= 1): the first boxes, those the cell's size is the mean of.
-  static HashGrid fit(const std::vector<Box>& boxes, int sized) {
+  // Over boxes[0, count), count >= 1.
+  static HashGrid fit(const std::vector<Box>& boxes, int count) {
     HashGrid grid;
     grid.origin = boxes[0].lo;
     Vec3 top = boxes[0].hi;
     double mean_size = 0.0;
-    for (std::size_t b = 0; b < boxes.size(); ++b) {
+    for (int b = 0; b < count; ++b) {
       grid.origin = grid.origin.cwiseMin(boxes[b].lo);
       top = top.cwiseMax(boxes[b].hi);
-      if (b < static_cast<std::size_t>(sized)) mean_size += (boxes[b].hi - boxes[b].lo).maxCoeff();
+      mean_size += (boxes[b].hi - boxes[b].lo).maxCoeff();
     }
-    mean_size /= static_cast<double>(sized);
+    mean_size /= static_cast<double>(count);
     const double extent = (top - grid.origin).maxCoeff();
     grid.cell = mean_size > 0.0 ? mean_size : (extent > 0.0 ? extent : 1.0);
     constexpr double kMaxCellsPerAxis = 1 << 20;  // the 3D key stays below 2^61
     while (extent / grid.cell > kMaxCellsPerAxis) grid.cell *= 2.0;
-    const std::uint64_t budget = 16 * boxes.size() + 64;
+    const std::uint64_t budget = 16 * static_cast<std::uint64_t>(count) + 64;
     while (true) {
       for (int a = 0; a < 3; ++a) {
         grid.dims[a] =
             static_cast<std::int64_t>(std::floor((top[a] - grid.origin[a]) / grid.cell)) + 1;
       }
       std::uint64_t total = 0;
-      for (const Box& box : boxes) {
-        total += grid.cells_of(box);
-        if (total > budget) break;
-      }
+      for (int b = 0; b < count && total <= budget; ++b) total += grid.cells_of(boxes[b]);
       if (total <= budget) return grid;
       grid.cell *= 2.0;
     }
@@ -203,25 +197,15 @@ void sort_by_cell(std::uint64_t cell_count, std::vector<CellEntry>& entries,
   }
 }
 
-// Stage 3: every box in every cell it overlaps, sorted by (cell, primitive), and each box's
-// span of cells. A collider primitive whose box misses the box around all of the mesh's boxes
-// pairs with nothing (collider-collider pairs are never wanted): it is left out.
-void fill_cells(const HashGrid& grid, const std::vector<Box>& boxes, int first_collider,
+// Stage 3: every mesh box (boxes[0, count)) in every cell it overlaps, sorted by (cell,
+// primitive), and each box's span of cells.
+void fill_cells(const HashGrid& grid, const std::vector<Box>& boxes, int count,
                 std::vector<CellSpan>& spans, std::vector<CellEntry>& entries,
                 std::vector<CellEntry>& scratch) {
   entries.clear();
-  spans.resize(boxes.size());
-  Box mesh_box = boxes[0];
-  for (int p = 1; p < first_collider; ++p) {
-    mesh_box.lo = mesh_box.lo.cwiseMin(boxes[p].lo);
-    mesh_box.hi = mesh_box.hi.cwiseMax(boxes[p].hi);
-  }
-  for (int p = 0; p < static_cast<int>(boxes.size()); ++p) {
+  spans.resize(static_cast<std::size_t>(count));
+  for (int p = 0; p < count; ++p) {
     const Box& box = boxes[p];
-    if (p >= first_collider && ((box.lo.array() > mesh_box.hi.array()).any() ||
-                                (mesh_box.lo.array() > box.hi.array()).any())) {
-      continue;
-    }
     CellSpan& span = spans[p];
     for (int a = 0; a < 3; ++a) {
       span.lo[a] = static_cast<int>(grid.coordinate(box.lo[a], a));
@@ -237,24 +221,18 @@ void fill_cells(const HashGrid& grid, const std::vector<Box>& boxes, int first_c
   sort_by_cell(cells, entries, scratch);
 }
 
-// Stage 4: the wanted pairs of primitives sharing a cell, with overlapping boxes, reported from
-// the cell of their intersection's lower corner only (that corner lies in both boxes, so exactly
-// one shared cell qualifies and no pair comes out twice). A cell's entries are sorted by
-// primitive, so each kind is one run of them: only the runs of wanted kinds meet (a vertex with
-// a triangle, an edge with an edge, ...), never two vertices or two triangles, which a loop over
+// Stage 4: the mesh's self pairs of primitives sharing a cell, with overlapping boxes,
+// reported from the cell of their intersection's lower corner only (that corner lies in both
+// boxes, so exactly one shared cell qualifies and no pair comes out twice). A cell's entries are
+// sorted by primitive, so each kind is one run of them: only the runs of wanted kinds meet (a
+// vertex with a triangle, two edges), never two vertices or two triangles, which a loop over
 // every two entries of the cell spends most of its time rejecting.
 class PairCollector {
  public:
   PairCollector(const HashGrid& grid, const std::vector<Box>& boxes,
                 const std::vector<CellSpan>& spans, const PrimitiveRanges& ranges,
-                const CollisionMesh& self, bool self_pairs, ContactCandidates& out)
-      : grid_(grid),
-        boxes_(boxes),
-        spans_(spans),
-        ranges_(ranges),
-        self_(self),
-        self_pairs_(self_pairs),
-        out_(out) {}
+                const CollisionMesh& self, ContactCandidates& out)
+      : grid_(grid), boxes_(boxes), spans_(spans), ranges_(ranges), self_(self), out_(out) {}
 
   void collect(const std::vector<CellEntry>& entries) {
     for (std::size_t begin = 0; begin < entries.size();) {
@@ -274,33 +252,22 @@ class PairCollector {
     cell_ = {static_cast<int>(key / (grid_.dims[1] * grid_.dims[2])),
              static_cast<int>(key / grid_.dims[2] % grid_.dims[1]),
              static_cast<int>(key % grid_.dims[2])};
-    std::array<Run, 6> runs;
+    std::array<Run, 3> runs;
     const CellEntry* at = first;
-    for (int kind = 0; kind < 6; ++kind) {
+    for (int kind = 0; kind < 3; ++kind) {
       const CellEntry* run_end = at;
       while (run_end != last && run_end->primitive < ranges_.offsets[kind + 1]) ++run_end;
       runs[kind] = {at, run_end};
       at = run_end;
     }
-    if (self_pairs_) {
-      each_pair(runs[kVertex], runs[kTriangle], [&](int v, int t) {
-        if (!in_triangle(v, self_.triangles[t])) out_.vertex_triangle.push_back({v, t});
+    each_pair(runs[kVertex], runs[kTriangle], [&](int v, int t) {
+      if (!in_triangle(v, self_.triangles[t])) out_.vertex_triangle.push_back({v, t});
+    });
+    for (const CellEntry* a = runs[kEdge].first; a != runs[kEdge].second; ++a) {
+      each_pair({a, a + 1}, {a + 1, runs[kEdge].second}, [&](int e, int f) {
+        if (!shares_vertex(self_.edges[e], self_.edges[f])) out_.edge_edge.push_back({e, f});
       });
-      for (const CellEntry* a = runs[kEdge].first; a != runs[kEdge].second; ++a) {
-        each_pair({a, a + 1}, {a + 1, runs[kEdge].second}, [&](int e, int f) {
-          if (!shares_vertex(self_.edges[e], self_.edges[f])) out_.edge_edge.push_back({e, f});
-        });
-      }
     }
-    each_pair(runs[kVertex], runs[kColliderTriangle], [&](int v, int t) {
-      out_.vertex_collider_triangle.push_back({v, t});
-    });
-    each_pair(runs[kTriangle], runs[kColliderVertex], [&](int t, int v) {
-      out_.collider_vertex_triangle.push_back({v, t});
-    });
-    each_pair(runs[kEdge], runs[kColliderEdge], [&](int e, int f) {
-      out_.edge_collider_edge.push_back({e, f});
-    });
   }
 
   // Every entry of `as` with every entry of `bs` whose boxes overlap, reported from this cell:
@@ -315,10 +282,7 @@ class PairCollector {
       const CellSpan& span_a = spans_[a->primitive];
       for (const CellEntry* b = bs.first; b != bs.second; ++b) {
         const Box& box_b = boxes_[b->primitive];
-        if ((box_a.lo.array() > box_b.hi.array()).any() ||
-            (box_b.lo.array() > box_a.hi.array()).any()) {
-          continue;
-        }
+        if (!boxes_overlap(box_a, box_b)) continue;
         // The cell of the intersection's lower corner: the grid's coordinate is monotone, so
         // it is the larger of the two boxes' lower cells along each axis.
         const CellSpan& span_b = spans_[b->primitive];
@@ -335,7 +299,6 @@ class PairCollector {
   const std::vector<CellSpan>& spans_;
   const PrimitiveRanges& ranges_;
   const CollisionMesh& self_;
-  const bool self_pairs_;
   ContactCandidates& out_;
   std::array<int, 3> cell_{};  // the cell being collected, (i, j, k)
 };
@@ -365,6 +328,35 @@ void sort_pairs(std::vector<T>& pairs, std::vector<T>& scratch, First first, Sec
   }
 }
 
+// Stage 5: the mesh's pairs with the collider, each mesh primitive's box against the tree of the
+// collider's boxes of the wanted kind. The leaf test is stage 4's, so the pairs are those of
+// testing every two boxes.
+void collect_collider_pairs(const std::vector<Box>& all_boxes, const PrimitiveRanges& ranges,
+                            std::array<BoxTree, 3>& trees, std::array<double, 3>& built_area,
+                            ContactCandidates& out) {
+  constexpr std::array<int, 3> kTreeKinds = {kColliderVertex, kColliderEdge, kColliderTriangle};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Box* boxes = all_boxes.data() + ranges.offsets[kTreeKinds[k]];
+    const int count = ranges.counts[kTreeKinds[k]];
+    BoxTree& tree = trees[k];
+    // Twice as loose as when built: colliders moving apart, or a new collider.
+    if (tree.size() != count || tree.refit(boxes) > 2.0 * built_area[k]) {
+      tree.build(boxes, count);
+      built_area[k] = tree.refit(boxes);
+    }
+  }
+  const auto query = [&](Kind kind, int tree, auto&& report) {
+    const Box* boxes = all_boxes.data() + ranges.offsets[kTreeKinds[tree]];
+    for (int p = 0; p < ranges.counts[kind]; ++p) {
+      trees[tree].overlapping(all_boxes[ranges.offsets[kind] + p], boxes,
+                              [&](int c) { report(p, c); });
+    }
+  };
+  query(kVertex, 2, [&](int v, int t) { out.vertex_collider_triangle.push_back({v, t}); });
+  query(kTriangle, 0, [&](int t, int v) { out.collider_vertex_triangle.push_back({v, t}); });
+  query(kEdge, 1, [&](int e, int f) { out.edge_collider_edge.push_back({e, f}); });
+}
+
 }  // namespace
 
 Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCandidates& out,
@@ -379,10 +371,14 @@ Result<void> BroadPhase::find(const MeshMotion& mesh, double radius, ContactCand
   }
   const PrimitiveRanges ranges(mesh.mesh, collider != nullptr ? &collider->mesh : nullptr);
   build_boxes(mesh, collider, radius, ranges, boxes_);
-  if (boxes_.empty()) return {};
-  const HashGrid grid = HashGrid::fit(boxes_, std::max(ranges.offsets[3], 1));
-  fill_cells(grid, boxes_, ranges.offsets[3], spans_, entries_, scratch_);
-  PairCollector(grid, boxes_, spans_, ranges, mesh.mesh, self_pairs, out).collect(entries_);
+  const int mesh_boxes = ranges.offsets[3];
+  if (self_pairs && mesh_boxes > 0) {
+    const HashGrid grid = HashGrid::fit(boxes_, mesh_boxes);
+    fill_cells(grid, boxes_, mesh_boxes, spans_, entries_, scratch_);
+    PairCollector(grid, boxes_, spans_, ranges, mesh.mesh, out).collect(entries_);
+  }
+  if (collider != nullptr)
+    collect_collider_pairs(boxes_, ranges, collider_trees_, built_area_, out);
   const auto vertex = [](const VertexTriangleCandidate& c) { return c.vertex; };
   const auto triangle = [](const VertexTriangleCandidate& c) { return c.triangle; };
   const auto edge_a = [](const EdgeEdgeCandidate& c) { return c.edge_a; };

@@ -201,6 +201,74 @@ TEST(BroadPhase, ColliderPairsAreASupersetOfBruteForce) {
   expect_well_formed(cloth.mesh, candidates);
 }
 
+// A primitive's box over a motion, inflated by radius / 2, as the broad phase makes it.
+template <std::size_t N>
+AlignedBox inflated_box(const std::array<int, N>& vertices, const Eigen::VectorXd& start,
+                        const Eigen::VectorXd& end, double radius) {
+  AlignedBox box{at(start, vertices[0]), at(start, vertices[0])};
+  for (const int v : vertices) {
+    for (const Eigen::VectorXd* x : {&start, &end}) {
+      box.lo = box.lo.cwiseMin(at(*x, v));
+      box.hi = box.hi.cwiseMax(at(*x, v));
+    }
+  }
+  box.lo.array() -= 0.5 * radius;
+  box.hi.array() += 0.5 * radius;
+  return box;
+}
+
+// The collider pairs are exactly those whose boxes overlap: one BroadPhase reused while the
+// collider moves (its box trees refitted), for another collider (rebuilt) and back.
+TEST(BroadPhase, ColliderPairsAreExactlyTheOverlappingBoxes) {
+  std::mt19937 rng(57);
+  const Grid cloth = make_grid(12, 0.1);
+  const Eigen::VectorXd start = jittered(folded(cloth, 0.55, 0.03), 0.02, rng);
+  const Eigen::VectorXd end = jittered(start, 0.02, rng);
+  const Grid coarse = make_grid(5, 0.3), fine = make_grid(9, 0.12);
+  BroadPhase broad_phase;
+  const double radius = 0.01;
+  for (const auto& [collider, lift] : {std::pair{&coarse, 0.0}, {&coarse, 0.02}, {&fine, 0.01},
+                                       {&coarse, 0.0}}) {
+    Eigen::VectorXd y0 = jittered(collider->positions, 0.01, rng), y1 = y0;
+    for (int v = 0; v < collider->mesh.vertex_count; ++v) {
+      y0[3 * v + 1] += lift - 0.01;
+      y1[3 * v + 1] += lift + 0.01;
+    }
+    const MeshMotion motion{collider->mesh, y0, y1};
+    ContactCandidates found;
+    ASSERT_TRUE(broad_phase.find({cloth.mesh, start, end}, radius, found, &motion));
+    ContactCandidates expected;
+    const auto box = [&](const auto& vertices, bool of_collider) {
+      return of_collider ? inflated_box(vertices, y0, y1, radius)
+                         : inflated_box(vertices, start, end, radius);
+    };
+    for (int v = 0; v < cloth.mesh.vertex_count; ++v) {
+      const AlignedBox vertex_box = box(std::array<int, 1>{v}, false);
+      for (int t = 0; t < static_cast<int>(collider->mesh.triangles.size()); ++t) {
+        if (boxes_overlap(vertex_box, box(collider->mesh.triangles[t], true)))
+          expected.vertex_collider_triangle.push_back({v, t});
+      }
+    }
+    for (int v = 0; v < collider->mesh.vertex_count; ++v) {
+      for (int t = 0; t < static_cast<int>(cloth.mesh.triangles.size()); ++t) {
+        if (boxes_overlap(box(std::array<int, 1>{v}, true), box(cloth.mesh.triangles[t], false)))
+          expected.collider_vertex_triangle.push_back({v, t});
+      }
+    }
+    for (int e = 0; e < static_cast<int>(cloth.mesh.edges.size()); ++e) {
+      for (int f = 0; f < static_cast<int>(collider->mesh.edges.size()); ++f) {
+        if (boxes_overlap(box(cloth.mesh.edges[e], false), box(collider->mesh.edges[f], true)))
+          expected.edge_collider_edge.push_back({e, f});
+      }
+    }
+    std::sort(expected.collider_vertex_triangle.begin(), expected.collider_vertex_triangle.end());
+    EXPECT_GT(expected.vertex_collider_triangle.size(), 50u);
+    EXPECT_EQ(found.vertex_collider_triangle, expected.vertex_collider_triangle);
+    EXPECT_EQ(found.collider_vertex_triangle, expected.collider_vertex_triangle);
+    EXPECT_EQ(found.edge_collider_edge, expected.edge_collider_edge);
+  }
+}
+
 // Without self pairs (a cloth without self-contact) the cloth-collider lists are the same and
 // the self lists empty.
 TEST(BroadPhase, WithoutSelfPairsOnlyColliderPairsAreFound) {

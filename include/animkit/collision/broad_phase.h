@@ -6,15 +6,19 @@
 //
 // Each primitive gets an axis-aligned box around its positions at t = 0 and t = 1 (so it holds
 // the primitive over the whole linear motion), inflated by radius / 2: if two primitives come
-// closer than the radius, their boxes overlap. The boxes are entered in the cells of a uniform
-// grid (cell size: the mesh primitives' mean box size, doubled while the boxes would fill more
-// than 16 cells each on average), the entries sorted by cell, and the pairs sharing a cell whose
+// closer than the radius, their boxes overlap. The mesh's boxes are entered in the cells of a
+// uniform grid (cell size: their mean size, doubled while the boxes would fill more than 16
+// cells each on average), the entries sorted by cell, and the self pairs sharing a cell whose
 // boxes overlap reported from the one cell holding the lower corner of the boxes' intersection
-// (so once, without a global de-duplication). Cost: near linear in the number of primitives
-// plus candidates (radix sorts of the cell entries and of the pairs). Output sorted, so
-// deterministic. One thread: collecting the cells' pairs over two gained nothing measurable on
-// a 41 x 41 drape, and beside another busy process each query could wait for a preempted
-// worker.
+// (so once, without a global de-duplication). The collider's boxes go into box trees
+// (box_tree.h) that each mesh box is looked up in: a finely tessellated collider's many small
+// boxes would crowd the cells sized for the mesh's, and each mesh box would be tested against
+// all of them. The trees are kept between queries and refitted, which a rigid collider's
+// motion leaves as tight as built. Either way the pairs are exactly those whose boxes overlap.
+// Cost: near linear in the number of primitives plus candidates (radix sorts of the cell
+// entries and of the pairs). Output sorted, so deterministic. One thread: collecting the cells'
+// pairs over two gained nothing measurable on a 41 x 41 drape, and beside another busy process
+// each query could wait for a preempted worker.
 //
 // Self pairs that share a vertex (a vertex and its own triangles, edges with a common end) are
 // never reported: their distance is zero by construction and IPC does not treat them as contact.
@@ -24,6 +28,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "animkit/collision/box_tree.h"
 #include "animkit/collision/collision_mesh.h"
 #include "animkit/core/result.h"
 #include "animkit/core/types.h"
@@ -64,10 +69,7 @@ struct ContactCandidates {
 
 namespace broad_phase_detail {
 /// A primitive's swept, inflated box (world space).
-struct Box {
-  /// Lower corner (componentwise minimum), world space.
-  Vec3 lo, hi;  ///< upper corner (componentwise maximum), world space
-};
+using Box = AlignedBox;
 /// The grid cells a box overlaps: [lo[a], hi[a]] along each axis a.
 struct CellSpan {
   std::array<int, 3> lo;  ///< first cell coordinate per axis
@@ -105,6 +107,10 @@ class BroadPhase {
 
  private:
   std::vector<broad_phase_detail::Box> boxes_;
+  // The collider's vertices', edges' and triangles' boxes in hierarchies, refitted at each
+  // query; rebuilt when their count changes or refitting leaves them twice as loose as built.
+  std::array<BoxTree, 3> collider_trees_;
+  std::array<double, 3> built_area_{};
   std::vector<broad_phase_detail::CellSpan> spans_;
   std::vector<broad_phase_detail::CellEntry> entries_, scratch_;
   std::vector<VertexTriangleCandidate> vertex_triangle_scratch_;
