@@ -24,7 +24,9 @@ void BoxTree::build(const AlignedBox* boxes, int count) {
   order_.resize(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i) order_[static_cast<std::size_t>(i)] = i;
   if (count == 0) return;
-  nodes_.reserve(static_cast<std::size_t>(2 * (count / kLeafSize) + 1));
+  // Median splits of more than kLeafSize boxes leave at least 2 in every leaf: at most
+  // count / 2 leaves, so fewer than `count` nodes.
+  nodes_.reserve(static_cast<std::size_t>(count));
   build_node(boxes, 0, count);
 }
 

@@ -334,27 +334,32 @@ void sort_pairs(std::vector<T>& pairs, std::vector<T>& scratch, First first, Sec
 void collect_collider_pairs(const std::vector<Box>& all_boxes, const PrimitiveRanges& ranges,
                             std::array<BoxTree, 3>& trees, std::array<double, 3>& built_area,
                             ContactCandidates& out) {
-  constexpr std::array<int, 3> kTreeKinds = {kColliderVertex, kColliderEdge, kColliderTriangle};
-  for (std::size_t k = 0; k < 3; ++k) {
-    const Box* boxes = all_boxes.data() + ranges.offsets[kTreeKinds[k]];
-    const int count = ranges.counts[kTreeKinds[k]];
-    BoxTree& tree = trees[k];
+  // trees[k] holds the collider's primitives of kind kColliderVertex + k.
+  const auto boxes_of = [&](int kind) { return all_boxes.data() + ranges.offsets[kind]; };
+  for (int k = 0; k < 3; ++k) {
+    const Box* boxes = boxes_of(kColliderVertex + k);
+    const int count = ranges.counts[kColliderVertex + k];
+    BoxTree& tree = trees[static_cast<std::size_t>(k)];
     // Twice as loose as when built: colliders moving apart, or a new collider.
     if (tree.size() != count || tree.refit(boxes) > 2.0 * built_area[k]) {
       tree.build(boxes, count);
       built_area[k] = tree.refit(boxes);
     }
   }
-  const auto query = [&](Kind kind, int tree, auto&& report) {
-    const Box* boxes = all_boxes.data() + ranges.offsets[kTreeKinds[tree]];
+  // Each mesh primitive of `kind` against the collider's primitives of `collider_kind`.
+  const auto query = [&](int kind, int collider_kind, auto&& report) {
+    const BoxTree& tree = trees[static_cast<std::size_t>(collider_kind - kColliderVertex)];
     for (int p = 0; p < ranges.counts[kind]; ++p) {
-      trees[tree].overlapping(all_boxes[ranges.offsets[kind] + p], boxes,
-                              [&](int c) { report(p, c); });
+      tree.overlapping(boxes_of(kind)[p], boxes_of(collider_kind), [&](int c) { report(p, c); });
     }
   };
-  query(kVertex, 2, [&](int v, int t) { out.vertex_collider_triangle.push_back({v, t}); });
-  query(kTriangle, 0, [&](int t, int v) { out.collider_vertex_triangle.push_back({v, t}); });
-  query(kEdge, 1, [&](int e, int f) { out.edge_collider_edge.push_back({e, f}); });
+  query(kVertex, kColliderTriangle, [&](int v, int t) {
+    out.vertex_collider_triangle.push_back({v, t});
+  });
+  query(kTriangle, kColliderVertex, [&](int t, int v) {
+    out.collider_vertex_triangle.push_back({v, t});
+  });
+  query(kEdge, kColliderEdge, [&](int e, int f) { out.edge_collider_edge.push_back({e, f}); });
 }
 
 }  // namespace
