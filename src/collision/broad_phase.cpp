@@ -43,6 +43,17 @@ std::optional<Error> check_motion(const MeshMotion& motion, const char* name) {
       }
     }
   }
+  if (const std::vector<double>* radius = motion.vertex_radius) {
+    if (radius->size() != static_cast<std::size_t>(motion.mesh.vertex_count)) {
+      return Error{std::string(name) + " vertex radii number " + std::to_string(radius->size()) +
+                   ", expected one per vertex (" + std::to_string(motion.mesh.vertex_count) + ")"};
+    }
+    for (std::size_t v = 0; v < radius->size(); ++v) {
+      if (!(std::isfinite((*radius)[v]) && (*radius)[v] >= 0.0))
+        return Error{std::string(name) + " vertex " + std::to_string(v) +
+                     " has a radius that is not finite and >= 0"};
+    }
+  }
   return std::nullopt;
 }
 
@@ -88,15 +99,18 @@ void build_boxes(const MeshMotion& mesh, const MeshMotion* collider, double radi
   boxes.resize(ranges.total());
   const auto box_of = [radius](const MeshMotion& m, const int* vertices, int n, Box& box) {
     box.lo = box.hi = m.start.segment<3>(3 * vertices[0]);
+    double reach = 0.0;
     for (int i = 0; i < n; ++i) {
       for (const Eigen::VectorXd* x : {&m.start, &m.end}) {
         const Vec3 p = x->segment<3>(3 * vertices[i]);
         box.lo = box.lo.cwiseMin(p);
         box.hi = box.hi.cwiseMax(p);
       }
+      if (m.vertex_radius != nullptr)
+        reach = std::max(reach, (*m.vertex_radius)[static_cast<std::size_t>(vertices[i])]);
     }
-    box.lo.array() -= 0.5 * radius;
-    box.hi.array() += 0.5 * radius;
+    box.lo.array() -= 0.5 * radius + reach;
+    box.hi.array() += 0.5 * radius + reach;
   };
   for (int side = 0; side < 2; ++side) {
     const MeshMotion* m = side == 0 ? &mesh : collider;

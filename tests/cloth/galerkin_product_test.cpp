@@ -23,7 +23,7 @@ using testing_support::dense;
 
 // A symmetric 8-node chain (each node coupled to the next two) and a prolongator onto three
 // aggregates whose rows reach one or two of them.
-struct Example {
+struct GalerkinExample {
   Matrix a = block_pattern<3, 3>({{0, 1, 2},
                                   {0, 1, 2, 3},
                                   {0, 1, 2, 3, 4},
@@ -36,9 +36,9 @@ struct Example {
   Matrix p = block_pattern<3, 3>({{0}, {0, 1}, {0, 1}, {1}, {1, 2}, {1, 2}, {2}, {2}}, 3);
 };
 
-Example example(std::mt19937& rng) {
+GalerkinExample example(std::mt19937& rng) {
   std::normal_distribution<double> normal;
-  Example e;
+  GalerkinExample e;
   for (int i = 0; i < e.a.block_rows; ++i) {
     for (int k = e.a.row_start[i]; k < e.a.row_start[i + 1]; ++k) {
       const int j = e.a.column[k];
@@ -55,7 +55,7 @@ Example example(std::mt19937& rng) {
 
 TEST(GalerkinProduct, GeneralBlocksGiveTheDenseProduct) {
   std::mt19937 rng(4);
-  Example e = example(rng);
+  GalerkinExample e = example(rng);
   std::normal_distribution<double> normal;
   for (auto& block : e.p.values) {
     for (int c = 0; c < 9; ++c) block(c % 3, c / 3) = normal(rng);
@@ -69,7 +69,7 @@ TEST(GalerkinProduct, GeneralBlocksGiveTheDenseProduct) {
 
 TEST(GalerkinProduct, ScaledIdentityBlocksGiveTheDenseProductByScaling) {
   std::mt19937 rng(5);
-  const Example e = example(rng);
+  const GalerkinExample e = example(rng);
   Matrix p = e.p;
   std::vector<double> scale;
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);

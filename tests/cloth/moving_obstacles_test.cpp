@@ -155,15 +155,16 @@ TEST(MovingObstacles, ASphereDrivenIntoAHangingClothPushesItAndNeverPassesThroug
 // A hostile speed on a tiny cloth (5 x 5 particles, 25 cm apart): a ball at 100 m/s, 3.3 m per
 // frame. With normal pushes only, it stalled short of its pose for all the Newton iterations a
 // step allowed (0.49 m short after 300, 53 s a step); carried, it reaches its pose within a few.
-// The sheet's relaxation after such a jolt may still take Newton to its cap (hence no
-// convergence asked here).
+// Against the ball's tessellation, the sheet's relaxation after the jolt could still take
+// Newton to its cap; against its exact surface every step converges, in 29 iterations on
+// average over the 4 frames.
 TEST(MovingObstacles, ABallAt100MetresPerSecondCarriesASmallSheetAlong) {
   World w = make_world(cotton_sheet(4, 1.0, 1.0),
                        {collider(SphereShape{0.2},
                                  ScriptedMotion{.initial = {.position = Vec3(0.0, 2.0, 0.0)},
                                                 .linear_velocity = Vec3(0.0, -100.0, 0.0)},
                                  1)});
-  run_audited(w, 1, 1, false);  // the frame it meets the sheet
+  EXPECT_LT(run_audited(w, 4), 4 * 50);
 }
 
 // The automatic barrier stiffness balances the larger of a particle's weight and the force

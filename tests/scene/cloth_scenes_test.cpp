@@ -55,8 +55,8 @@ TEST_P(BuiltinSceneAuditSlow, EveryFrameIsIntersectionFreeAndConverged) {
     ASSERT_EQ(audit::count_self_intersections(cloth), 0) << "frame " << frame;
     // Each collider's surface as contact had it at the frame's end: its pose at that time (a
     // sphere keeps its first orientation, its spin being friction's business only).
-    const Eigen::VectorXd& obstacles =
-        world->contact ? world->contact->obstacle_positions() : Eigen::VectorXd();
+    const Eigen::VectorXd obstacles =
+        world->contact ? world->contact->collider_points() : Eigen::VectorXd();
     int first = 0;
     for (Collider& collider : world->colliders) {
       collider.set_time(frame * desc.time_step);

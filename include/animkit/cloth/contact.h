@@ -122,8 +122,8 @@ struct ContactObstacles {
   /// to their poses at the substep's end (ClothState::time + h).
   std::vector<Collider> colliders = {};
 
-  /// Every vertex of every mesh, then of every collider's surface, in order (the indices of
-  /// the primitives follow).
+  /// Every vertex of every mesh, then every collider's contact vertices (its surface's, or a
+  /// sphere's centre alone), in order (the indices of the primitives follow).
   int vertex_count() const;
 };
 

@@ -91,6 +91,9 @@ struct MeshMotion {
   const CollisionMesh& mesh;     ///< the mesh's edges and triangles
   const Eigen::VectorXd& start;  ///< positions at t = 0, 3 * mesh.vertex_count entries
   const Eigen::VectorXd& end;    ///< positions at t = 1, 3 * mesh.vertex_count entries
+  /// Per vertex, m, >= 0: how far the primitive reaches around the vertex (a sphere's centre
+  /// stands for the whole sphere); its primitives' boxes grow by it. nullptr: all 0.
+  const std::vector<double>* vertex_radius = nullptr;
 };
 
 /// The spatial hash. Keeps its work vectors between calls: reuse one object per simulation so a

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "../stacked_vectors.h"
+#include "animkit/cloth/contact.h"
 #include "animkit/collision/ccd.h"
 
 namespace animkit {
@@ -21,7 +22,8 @@ double mollifier_threshold(double rest_a2, double rest_b2) {
 
 Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
                                                const std::vector<TriangleMesh>& obstacles,
-                                               bool self_contact) {
+                                               bool self_contact,
+                                               const std::vector<double>& sphere_radius) {
   ContactGeometry g;
   g.self_contact = self_contact;
   auto cloth = build_collision_mesh(model.particle_count(), model.triangles);
@@ -29,10 +31,14 @@ Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
   g.cloth = std::move(*cloth);
   std::vector<std::array<int, 3>> triangles;
   std::vector<Vec3> vertices;
-  for (const TriangleMesh& mesh : obstacles) {
+  for (std::size_t m = 0; m < obstacles.size(); ++m) {
+    const TriangleMesh& mesh = obstacles[m];
     const int first = static_cast<int>(vertices.size());
     g.obstacle_mesh_start.push_back(first);
     vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
+    g.obstacle_radius.insert(g.obstacle_radius.end(), mesh.vertices.size(),
+                             m < sphere_radius.size() ? sphere_radius[m] : 0.0);
+    g.obstacle_spin.push_back(Eigen::Matrix3d::Zero());
     for (const auto& t : mesh.triangles)
       triangles.push_back({first + t[0], first + t[1], first + t[2]});
   }
@@ -78,8 +84,9 @@ Result<void> ContactPairFinder::gather(const ContactGeometry& g, const Eigen::Ve
   }
   const MeshMotion cloth{g.cloth, x, end_};
   const MeshMotion obstacles{g.obstacles, g.obstacle_positions,
-                             obstacle_end ? *obstacle_end : g.obstacle_positions};
-  const bool any_obstacle = !g.obstacles.triangles.empty();
+                             obstacle_end ? *obstacle_end : g.obstacle_positions,
+                             &g.obstacle_radius};
+  const bool any_obstacle = g.obstacles.vertex_count > 0;
   if (auto ok = broad_phase_.find(cloth, radius, candidates_, any_obstacle ? &obstacles : nullptr,
                                   g.self_contact);
       !ok) {
@@ -106,7 +113,10 @@ Result<void> ContactPairFinder::gather(const ContactGeometry& g, const Eigen::Ve
     point_triangle(c.vertex, g.obstacles.triangles[c.triangle], n);
   for (const auto& c : candidates_.collider_vertex_triangle) {
     const auto& t = g.cloth.triangles[c.triangle];
-    pairs.push_back({ContactKind::point_triangle, {n + c.vertex, t[0], t[1], t[2]}});
+    pairs.push_back({ContactKind::point_triangle,
+                     {n + c.vertex, t[0], t[1], t[2]},
+                     0.0,
+                     g.obstacle_radius[static_cast<std::size_t>(c.vertex)]});
   }
   for (const auto& c : candidates_.edge_collider_edge) {
     const auto& a = g.cloth.edges[c.edge_a];
@@ -158,6 +168,11 @@ double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>
     // sets hold many such pairs (gather_region.h: complete for a region larger than one
     // step), and Additive CCD would spend two distance evaluations on each to find it.
     if (!moves || contact_box_gap(pair, start, end) > reach) continue;
+    // A sphere's gap is its centre's distance less the radius, which loses the digits the two
+    // share: it is kept above the smallest gap a start may have, far above that rounding (an
+    // obstacle closing in on pinned cloth, a tenth of the gap left each time, would otherwise
+    // bring it to a gap of zero, which the barrier cannot take).
+    const double floor = pair.thickness > 0.0 ? kMinStartGapFraction * reach : 0.0;
     if (distance_floor2 != nullptr) {
       // A point of a primitive moves no farther than the farthest of its vertices, so the
       // distance falls by at most the two primitives' largest moves together: if that keeps
@@ -169,13 +184,15 @@ double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>
         double& primitive = move[i < second ? 0 : 1];
         primitive = std::max(primitive, (end[i] - start[i]).norm());
       }
-      const double gap = std::sqrt((*distance_floor2)[k]) - settings.thickness;
+      const double gap = std::sqrt((*distance_floor2)[k]) - settings.thickness - floor;
       if (move[0] + move[1] <= (1.0 - min_separation) * gap) continue;
     }
     settings.max_time = bound;  // nothing past the bound found so far matters
+    AdditiveCcdSettings pair_settings = settings;
+    pair_settings.thickness += pair.thickness + floor;  // a sphere's: the gap to its surface
     const auto hit = pair.kind == ContactKind::point_triangle
-                         ? point_triangle_ccd(start, end, settings)
-                         : edge_edge_ccd(start, end, settings);
+                         ? point_triangle_ccd(start, end, pair_settings)
+                         : edge_edge_ccd(start, end, pair_settings);
     if (!hit) return 0.0;  // a non-finite coordinate: take no step
     bound = std::min(bound, hit->time_of_impact);
   }

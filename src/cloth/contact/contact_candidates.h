@@ -30,6 +30,14 @@ struct ContactGeometry {
   /// sphere turning about its centre keeps out of its surface (see MovingObstacles). What
   /// friction measures the cloth's sliding against; zero for fixed meshes.
   Eigen::VectorXd obstacle_motion;
+  /// Per obstacle vertex, m: a sphere collider's radius for its centre, the one vertex by
+  /// which it takes part in contact (its exact surface, not a tessellation); 0 for the
+  /// vertices of meshes. Pairs with a centre carry it as their thickness.
+  std::vector<double> obstacle_radius;
+  /// Per obstacle mesh: for a sphere, how the substep turns it about its centre, as the
+  /// rotation less the identity (its surface point at offset o from the centre moves by the
+  /// centre's obstacle_motion plus obstacle_spin o: what friction feels of a spin); else zero.
+  std::vector<Eigen::Matrix3d> obstacle_spin;
   std::vector<double> cloth_rest_length2, obstacle_rest_length2;  ///< per edge, squared
   std::vector<int> obstacle_mesh_start;  ///< per obstacle mesh, its first vertex's index
   bool self_contact = true;
@@ -40,9 +48,12 @@ struct ContactGeometry {
 };
 
 /// The primitives of the cloth (its triangles and their edges) and of the obstacles.
+/// `sphere_radius`: per obstacle mesh, 0, or the radius of the sphere it stands for (a mesh of
+/// the sphere's centre alone, no triangles); empty: all 0.
 Result<ContactGeometry> build_contact_geometry(const ClothModel& model,
                                                const std::vector<TriangleMesh>& obstacles,
-                                               bool self_contact);
+                                               bool self_contact,
+                                               const std::vector<double>& sphere_radius = {});
 /// The cloth's edges' rest lengths from `cloth_positions` (the obstacles' are their own).
 void set_cloth_rest_lengths(ContactGeometry& geometry, const Eigen::VectorXd& cloth_positions);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <limits>
 
 #include "animkit/collision/distance_type.h"
@@ -12,12 +13,33 @@ namespace animkit {
 
 namespace {
 
+// A sphere pair's squared gap d = (s - r)^2 from the squared distance q = s^2 of its centre to
+// the triangle, and d's first and second derivatives in q (contact_pair.h); d = 0 (contact)
+// when the triangle reaches into the sphere.
+struct SphereGap {
+  double squared = 0.0, first = 0.0, second = 0.0;
+};
+
+SphereGap sphere_gap(double q, double radius) {
+  const double s = std::sqrt(q);
+  if (!(s > radius)) return {};
+  return {(s - radius) * (s - radius), 1.0 - radius / s, radius / (2.0 * s * q)};
+}
+
 StencilDerivatives<4> distance_derivatives(const ContactPair& pair, const std::array<Vec3, 4>& p,
                                            double ground) {
   switch (pair.kind) {
-    case ContactKind::point_triangle:
-      return point_triangle_distance_squared_derivatives(
+    case ContactKind::point_triangle: {
+      StencilDerivatives<4> d = point_triangle_distance_squared_derivatives(
           p[0], p[1], p[2], p[3], point_triangle_distance_type(p[0], p[1], p[2], p[3]));
+      if (pair.thickness > 0.0) {
+        const SphereGap gap = sphere_gap(d.value, pair.thickness);
+        d.hessian = gap.first * d.hessian + gap.second * d.gradient * d.gradient.transpose();
+        d.gradient *= gap.first;
+        d.value = gap.squared;
+      }
+      return d;
+    }
     case ContactKind::edge_edge:
       return edge_edge_distance_squared_derivatives(
           p[0], p[1], p[2], p[3], edge_edge_distance_type(p[0], p[1], p[2], p[3]));
@@ -40,9 +62,16 @@ StencilDerivatives<4> distance_derivatives(const ContactPair& pair, const std::a
 StencilGradient<4> distance_gradient(const ContactPair& pair, const std::array<Vec3, 4>& p,
                                      double ground) {
   switch (pair.kind) {
-    case ContactKind::point_triangle:
-      return point_triangle_distance_squared_gradient(
+    case ContactKind::point_triangle: {
+      StencilGradient<4> d = point_triangle_distance_squared_gradient(
           p[0], p[1], p[2], p[3], point_triangle_distance_type(p[0], p[1], p[2], p[3]));
+      if (pair.thickness > 0.0) {
+        const SphereGap gap = sphere_gap(d.value, pair.thickness);
+        d.gradient *= gap.first;
+        d.value = gap.squared;
+      }
+      return d;
+    }
     case ContactKind::edge_edge:
       return edge_edge_distance_squared_gradient(
           p[0], p[1], p[2], p[3], edge_edge_distance_type(p[0], p[1], p[2], p[3]));
@@ -63,8 +92,10 @@ StencilGradient<4> distance_gradient(const ContactPair& pair, const std::array<V
 double contact_distance_squared(const ContactPair& pair, const std::array<Vec3, 4>& p,
                                 double ground) {
   switch (pair.kind) {
-    case ContactKind::point_triangle:
-      return point_triangle_distance_squared(p[0], p[1], p[2], p[3]);
+    case ContactKind::point_triangle: {
+      const double q = point_triangle_distance_squared(p[0], p[1], p[2], p[3]);
+      return pair.thickness > 0.0 ? sphere_gap(q, pair.thickness).squared : q;
+    }
     case ContactKind::edge_edge:
       return edge_edge_distance_squared(p[0], p[1], p[2], p[3]);
     case ContactKind::ground: {
@@ -115,7 +146,16 @@ StencilDerivatives<4> contact_barrier_derivatives(const ContactPair& pair,
     out.gradient = m.value * out.gradient + b * m.gradient;
     out.value = m.value * b;
   }
-  if (project) out.hessian = project_to_psd(out.hessian);
+  if (!project) return out;
+  if (pair.thickness > 0.0) {
+    // A sphere's centre is no unknown (a collider follows its motion): only the cloth's 9 x 9
+    // block enters Newton's matrix, and that block alone needs to be PSD.
+    const Eigen::Matrix<double, 9, 9> cloth = out.hessian.bottomRightCorner<9, 9>();
+    out.hessian.setZero();
+    out.hessian.bottomRightCorner<9, 9>() = project_to_psd(cloth);
+    return out;
+  }
+  out.hessian = project_to_psd(out.hessian);
   return out;
 }
 
@@ -133,6 +173,18 @@ Eigen::Matrix<double, 12, 12> contact_barrier_gauss_newton_hessian(const Contact
   if (pair.kind == ContactKind::edge_edge)
     weight *= edge_edge_mollifier(p[0], p[1], p[2], p[3], pair.mollifier_threshold);
   return weight * d.gradient * d.gradient.transpose();
+}
+
+bool gauss_newton_suffices(const ContactPair& pair, const std::array<Vec3, 4>& p) {
+  if (pair.thickness == 0.0) return true;
+  switch (point_triangle_distance_type(p[0], p[1], p[2], p[3])) {
+    case PointTriangleDistanceType::kPointA:
+    case PointTriangleDistanceType::kPointB:
+    case PointTriangleDistanceType::kPointC:
+      return true;
+    default:
+      return false;
+  }
 }
 
 Eigen::Matrix<double, 12, 1> contact_barrier_gradient(const ContactPair& pair,

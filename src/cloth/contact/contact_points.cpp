@@ -84,8 +84,16 @@ std::array<Vec3, 2> closest_points_of_segments(const Vec3& a0, const Vec3& a1, c
 std::array<Vec3, 2> contact_closest_points(const ContactPair& pair, const std::array<Vec3, 4>& p,
                                            double ground) {
   switch (pair.kind) {
-    case ContactKind::point_triangle:
-      return {p[0], closest_point_on_triangle(p[0], p[1], p[2], p[3])};
+    case ContactKind::point_triangle: {
+      const Vec3 q = closest_point_on_triangle(p[0], p[1], p[2], p[3]);
+      if (pair.thickness > 0.0) {
+        // A sphere's centre: its surface's point toward the triangle.
+        const Vec3 toward = q - p[0];
+        const double distance = toward.norm();
+        if (distance > 0.0) return {p[0] + (pair.thickness / distance) * toward, q};
+      }
+      return {p[0], q};
+    }
     case ContactKind::edge_edge:
       return closest_points_of_segments(p[0], p[1], p[2], p[3]);
     case ContactKind::ground:

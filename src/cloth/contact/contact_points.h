@@ -21,7 +21,8 @@ std::array<Vec3, 2> closest_points_of_segments(const Vec3& a0, const Vec3& a1, c
 
 /// The pair's closest points at positions p (p[i] the position of vertices[i]), `ground` the
 /// plane's height: [on the first primitive (the point, edge a, the particle), on the second
-/// (the triangle, edge b, the ground)]. Their distance is the pair's unmollified distance.
+/// (the triangle, edge b, the ground)]; for a sphere's pair, its surface's point toward the
+/// triangle in place of its centre. Their distance is the pair's unmollified distance.
 std::array<Vec3, 2> contact_closest_points(const ContactPair& pair, const std::array<Vec3, 4>& p,
                                            double ground);
 

@@ -64,7 +64,7 @@ std::optional<Error> ContactSettings::validate() const {
 int ContactObstacles::vertex_count() const {
   int n = 0;
   for (const TriangleMesh& mesh : meshes) n += static_cast<int>(mesh.vertices.size());
-  for (const Collider& c : colliders) n += static_cast<int>(c.model().surface.vertices.size());
+  for (const Collider& c : colliders) n += static_cast<int>(contact_vertices(c).size());
   return n;
 }
 
@@ -79,12 +79,11 @@ struct ContactTerm::Impl {
   ContactGeometry geometry;  // the cloth's and the obstacles' primitives, one index space
   ContactPairFinder finder;
   MovingObstacles moving;
-  int first_collider_vertex = 0;   // colliders' vertices follow the fixed meshes'
   std::vector<ContactPair> pairs;  // what value, gradient and Hessian sum over
   GatherRegion region;             // where `pairs` holds every pair within dhat
   std::int64_t gathers = 0;
-  bool exact_hessian = false;      // this substep's pairs take the projected exact Hessian
-  mutable Eigen::VectorXd moved;   // difference()'s workspace
+  bool exact_hessian = false;     // this substep's pairs take the projected exact Hessian
+  mutable Eigen::VectorXd moved;  // difference()'s workspace
   bool rest_lengths_known = false;
 
   Vec3 position(const Eigen::VectorXd& x, int v) const {
@@ -261,7 +260,7 @@ struct ContactTerm::Impl {
       const ContactPair& pair = pairs[k];
       const std::array<Vec3, 4> p = positions(x, pair);
       pair_hessians[static_cast<std::size_t>(a)] =
-          !exact_hessian && !collapsed(at.distance2[k])
+          !exact_hessian && !collapsed(at.distance2[k]) && gauss_newton_suffices(pair, p)
               ? contact_barrier_gauss_newton_hessian(pair, p, ground_height(), barrier)
               : contact_barrier_derivatives(pair, p, ground_height(), barrier).hessian;
     });
@@ -293,18 +292,24 @@ Result<std::shared_ptr<ContactTerm>> ContactTerm::create(std::shared_ptr<const C
   impl->exact_hessian = settings.hessian == BarrierHessian::projected;
   impl->barrier = *LogBarrier::create(settings.thickness * settings.thickness);
   impl->ground = obstacles.ground_height;
-  // One obstacle list: the fixed meshes, then each collider's surface where it is now.
+  // One obstacle list: the fixed meshes, then each collider's surface where it is now (a
+  // sphere's centre, standing for its exact surface: contact_vertices).
   std::vector<TriangleMesh> surfaces = std::move(obstacles.meshes);
+  std::vector<double> sphere_radius(surfaces.size(), 0.0);
   int first = 0;
   for (const TriangleMesh& mesh : surfaces) first += static_cast<int>(mesh.vertices.size());
-  impl->first_collider_vertex = first;
   for (Collider& c : obstacles.colliders) {
-    surfaces.push_back({c.world_vertices(), c.model().surface.triangles});
-    const int count = static_cast<int>(c.model().surface.vertices.size());
-    impl->moving.add(std::move(c), first);
+    sphere_radius.push_back(contact_radius(c));
+    if (sphere_radius.back() > 0.0) {
+      surfaces.push_back({{c.pose().position}, {}});
+    } else {
+      surfaces.push_back({c.world_vertices(), c.model().surface.triangles});
+    }
+    const int count = static_cast<int>(surfaces.back().vertices.size());
+    impl->moving.add(std::move(c), first, static_cast<int>(surfaces.size()) - 1);
     first += count;
   }
-  auto geometry = build_contact_geometry(*model, surfaces, settings.self_contact);
+  auto geometry = build_contact_geometry(*model, surfaces, settings.self_contact, sphere_radius);
   if (!geometry) return fail(geometry.error().message);
   impl->geometry = std::move(*geometry);
   double mass = 0.0;
@@ -352,9 +357,7 @@ const RigidPose& ContactTerm::collider_pose(std::size_t index) const {
 }
 
 Eigen::VectorXd ContactTerm::collider_points() const {
-  const Eigen::VectorXd& all = impl_->geometry.obstacle_positions;
-  const Eigen::Index first = 3 * static_cast<Eigen::Index>(impl_->first_collider_vertex);
-  return all.tail(all.size() - first);
+  return impl_->moving.surface_points(impl_->geometry);
 }
 
 const Eigen::VectorXd& ContactTerm::obstacle_positions() const {

@@ -95,6 +95,14 @@ struct FrictionTerm::Impl {
         if (v < n) continue;
         lagged->obstacle_motion += lagged->weights[i] * at(g.obstacle_motion, v - n);
       }
+      if (pair.thickness > 0.0) {
+        // A sphere's centre: its surface point facing the triangle also turns with its spin.
+        Vec3 separation = Vec3::Zero();  // from the triangle's closest point to the centre
+        for (int i = 0; i < 4; ++i) separation += lagged->weights[i] * p[i];
+        const auto mesh = static_cast<std::size_t>(g.obstacle_mesh_of(pair.vertices[0] - n));
+        lagged->obstacle_motion +=
+            g.obstacle_spin[mesh] * (-pair.thickness * separation.normalized());
+      }
       pairs.push_back(*lagged);
     }
     return true;

@@ -6,9 +6,21 @@
 #include <utility>
 #include <variant>
 
+#include "contact_points.h"
+
 namespace animkit {
 
-void MovingObstacles::add(Collider collider, int first_vertex) {
+const std::vector<Vec3>& contact_vertices(const Collider& collider) {
+  static const std::vector<Vec3> centre{Vec3::Zero()};
+  return contact_radius(collider) > 0.0 ? centre : collider.model().surface.vertices;
+}
+
+double contact_radius(const Collider& collider) {
+  const auto* sphere = std::get_if<SphereShape>(&collider.model().desc.shape);
+  return sphere != nullptr ? sphere->radius : 0.0;
+}
+
+void MovingObstacles::add(Collider collider, int first_vertex, int mesh) {
   // A sphere turning about its centre covers the same ground: its surface for contact keeps
   // its first orientation (so its tessellation does not sweep into cloth resting on it), and
   // friction still feels the spin (begin_substep).
@@ -18,7 +30,31 @@ void MovingObstacles::add(Collider collider, int first_vertex) {
   aims_.push_back(collider.pose());
   colliders_.push_back(std::move(collider));
   first_vertex_.push_back(first_vertex);
+  mesh_.push_back(mesh);
   targets_.emplace_back();
+}
+
+Eigen::VectorXd MovingObstacles::surface_points(const ContactGeometry& g) const {
+  std::size_t count = 0;
+  for (const Collider& c : colliders_) count += c.model().surface.vertices.size();
+  Eigen::VectorXd points(3 * static_cast<Eigen::Index>(count));
+  Eigen::Index out = 0;
+  for (std::size_t c = 0; c < colliders_.size(); ++c) {
+    const auto& local = colliders_[c].model().surface.vertices;
+    const Eigen::Index first = 3 * static_cast<Eigen::Index>(first_vertex_[c]);
+    if (surface_rotation_[c]) {
+      const RigidPose surface{g.obstacle_positions.segment<3>(first), *surface_rotation_[c]};
+      for (const Vec3& v : local) {
+        points.segment<3>(out) = surface.to_world(v);
+        out += 3;
+      }
+    } else {
+      const auto size = 3 * static_cast<Eigen::Index>(local.size());
+      points.segment(out, size) = g.obstacle_positions.segment(first, size);
+      out += size;
+    }
+  }
+  return points;
 }
 
 void MovingObstacles::begin_substep(ContactGeometry& g, double t_end) {
@@ -28,8 +64,14 @@ void MovingObstacles::begin_substep(ContactGeometry& g, double t_end) {
   for (std::size_t c = 0; c < colliders_.size(); ++c) {
     aims_[c] = targets_[c] ? *targets_[c] : pose_at(colliders_[c].model().desc.motion, t_end);
     RigidPose surface = aims_[c];
-    if (surface_rotation_[c]) surface.rotation = *surface_rotation_[c];
-    const auto& local = colliders_[c].model().surface.vertices;
+    if (surface_rotation_[c]) {
+      surface.rotation = *surface_rotation_[c];
+      // The sphere's turn over the substep, for friction at its surface's points.
+      g.obstacle_spin[static_cast<std::size_t>(mesh_[c])] =
+          (aims_[c].rotation * poses_[c].rotation.inverse()).toRotationMatrix() -
+          Eigen::Matrix3d::Identity();
+    }
+    const std::vector<Vec3>& local = contact_vertices(colliders_[c]);
     for (std::size_t i = 0; i < local.size(); ++i) {
       const Eigen::Index at = 3 * (first_vertex_[c] + static_cast<Eigen::Index>(i));
       end_.segment<3>(at) = surface.to_world(local[i]);
@@ -130,6 +172,22 @@ void MovingObstacles::push_cloth(const ContactGeometry& g, const std::vector<cha
     const int p = pair.vertices[0];
     const bool cloth_point = p < n;
     if (cloth_point == (pair.vertices[1] < n)) continue;  // cloth-cloth (obstacle-obstacle: none)
+    if (pair.thickness > 0.0) {
+      // A sphere's centre: its surface comes toward the triangle's closest point along the
+      // direction from the centre to it, whatever part of the triangle that point is on.
+      const Vec3 centre = position(p);
+      Vec3 normal =
+          closest_point_on_triangle(centre, position(pair.vertices[1]), position(pair.vertices[2]),
+                                    position(pair.vertices[3])) -
+          centre;
+      const double distance = normal.norm();
+      if (!(distance > 0.0)) continue;
+      normal /= distance;
+      const double gap = distance - pair.thickness;
+      const double lack = moving(p).dot(normal) - (gap - 0.5 * radius);
+      for (int i = 1; i < 4; ++i) push(pair.vertices[i], lack, normal, moving(p));
+      continue;
+    }
     const Vec3 a = position(pair.vertices[1]);
     const Vec3 u = position(pair.vertices[2]) - a, v = position(pair.vertices[3]) - a;
     Vec3 normal = u.cross(v);

@@ -31,10 +31,18 @@
 
 namespace animkit {
 
+/// The local points by which a collider takes part in contact: a sphere's centre alone, its
+/// radius the thickness of the centre's pairs (its exact surface, not a tessellation that a
+/// coarse cloth triangle would rest on by many vertices); else its surface's vertices.
+const std::vector<Vec3>& contact_vertices(const Collider& collider);
+/// A sphere's radius (m); 0 for every other shape.
+double contact_radius(const Collider& collider);
+
 class MovingObstacles {
  public:
-  /// A collider whose surface's vertices are the obstacles' vertices from `first_vertex` on.
-  void add(Collider collider, int first_vertex);
+  /// A collider whose contact_vertices() are the obstacles' vertices from `first_vertex` on,
+  /// obstacle mesh `mesh` of the contact geometry.
+  void add(Collider collider, int first_vertex, int mesh);
 
   const std::vector<Collider>& colliders() const { return colliders_; }
   /// From now on, collider i aims at `target` (validated by the caller) instead of its motion.
@@ -53,6 +61,10 @@ class MovingObstacles {
                double min_separation, Eigen::VectorXd& x, std::vector<ContactPair>& pairs);
   /// Every obstacle at its end.
   bool settled() const { return settled_; }
+  /// Every collider's surface vertices where contact has them now (world, m, 3 each, in the
+  /// order of the colliders and their surfaces' vertices): a sphere's about its centre, with
+  /// its first orientation.
+  Eigen::VectorXd surface_points(const ContactGeometry& geometry) const;
   /// The longest straight move of a collider surface's vertex from its start to its end in
   /// this substep, m (a sphere's spin moves no vertex of its surface).
   double largest_surface_move() const { return largest_surface_move_; }
@@ -68,11 +80,11 @@ class MovingObstacles {
   std::vector<std::optional<RigidPose>> targets_;
   std::vector<RigidPose> poses_, aims_;                // reached, and aimed at in this substep
   std::vector<std::optional<Quat>> surface_rotation_;  // a sphere's surface: never turned
+  std::vector<int> mesh_;  // each collider's obstacle mesh (ContactGeometry::obstacle_spin)
   Eigen::VectorXd end_, move_, push_;  // obstacles' ends and remaining move; the cloth's push
   Eigen::VectorXd carry_;  // the same particles moved as the obstacle point that pushes them
   std::vector<ContactPair> carried_pairs_;  // the pairs along the carried move
   std::vector<double> pushed_;         // per particle: the push's length so far
-  std::vector<Vec3> surface_;          // one collider's world vertices
   double largest_surface_move_ = 0.0;
   bool settled_ = true;
 };

@@ -131,6 +131,11 @@ std::string touching(const ContactPair& pair, int cloth_vertices, double gap, do
   const bool other_is_cloth = v[3] < cloth_vertices;
   std::string what;
   if (pair.kind == ContactKind::point_triangle) {
+    if (pair.thickness > 0.0 && !(gap > 0.0)) {
+      // A sphere's centre, the triangle reaching into the sphere.
+      return obstacle_name(v[0] - cloth_vertices) + " passes through the cloth's triangle of " +
+             particles({v[1], v[2], v[3]}) + " at the start";
+    }
     if (v[0] >= cloth_vertices) {
       what = obstacle_name(v[0] - cloth_vertices) + " touches the cloth's triangle of " +
              particles({v[1], v[2], v[3]});
