@@ -141,7 +141,8 @@ void bind_colliders(py::module_& m) {
       "(m/s) and angular_velocity (rad/s, world axes, about the collider's origin) move it at "
       "constant rates; or keyframes, a list of (time, position) or (time, position, rotation), "
       "interpolated linearly (slerp for rotations). friction: Coulomb coefficient mu, >= 0. "
-      "tessellation: the surface's subdivision level. Raises animkit.Error on any invalid "
+      "tessellation: the surface's subdivision level (a sphere's only drawn and exported: "
+      "contact takes the sphere itself). Raises animkit.Error on any invalid "
       "value (the library's message, naming the collider).";
   collider.def_static(
       "sphere",
@@ -228,7 +229,8 @@ void bind_colliders(py::module_& m) {
   collider.def_readwrite("name", &ColliderDesc::name, "The collider's name (distinct in a scene).")
       .def_readwrite("friction", &ColliderDesc::friction, "Coulomb friction coefficient, >= 0.")
       .def_readwrite("tessellation", &ColliderDesc::tessellation,
-                     "Subdivision level of the collider's surface.")
+                     "Subdivision level of the collider's surface (for a sphere, only what is "
+                     "drawn and exported: contact takes the sphere itself).")
       .def_property_readonly(
           "shape", [](const ColliderDesc& c) { return shape_name(c.shape); },
           "'sphere', 'box', 'capsule', 'plane' or 'mesh'.")

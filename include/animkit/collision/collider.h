@@ -27,7 +27,8 @@ struct ColliderDesc {
   /// finite and >= 0 (0: frictionless), default 0.3.
   double friction = 0.3;
   /// Surface level for collider_surface(), in [kMinTessellation, kMaxTessellation], default 3
-  /// (a sphere of 1280 triangles, 0.9 % short of the true volume).
+  /// (a sphere of 1280 triangles, 0.9 % short of the true volume). For a sphere only what is
+  /// drawn, exported and audited: contact takes the sphere itself.
   int tessellation = 3;
 
   /// The first problem, prefixed with the collider's name ("collider 'ball': radius must be

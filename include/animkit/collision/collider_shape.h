@@ -1,8 +1,10 @@
 #pragma once
 // The shapes a cloth can collide with, as plain data in the collider's local frame. Contact
-// treats every shape but the plane as the closed triangle mesh collider_surface() makes of it,
-// so one point-triangle / edge-edge code path keeps the cloth out of all of them; the plane is
-// an analytic half-space (the cloth above it means the whole cloth is above it).
+// treats a box, a capsule and a mesh as the closed triangle mesh collider_surface() makes of
+// it, so one point-triangle / edge-edge code path keeps the cloth out of all of them; a sphere
+// as itself, its centre and radius (the radius as the thickness of its centre's pairs with the
+// cloth's triangles, docs/contact.md "A sphere as itself"); the plane as an analytic
+// half-space (the cloth above it means the whole cloth is above it).
 #include <variant>
 
 #include "animkit/core/triangle_mesh.h"
