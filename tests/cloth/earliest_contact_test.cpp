@@ -5,10 +5,12 @@
 #include "../../src/cloth/contact/contact_candidates.h"
 
 #include "../../src/cloth/contact/contact_pair.h"
+#include "animkit/cloth/contact.h"
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace animkit {
@@ -93,6 +95,39 @@ TEST(EarliestContact, KnownStartDistancesPassOverOnlyPairsThatCannotCloseTheirGa
   // The floors decide: told every pair starts 100 m apart, the long pass is not checked.
   const std::vector<double> far(pairs.size(), 100.0 * 100.0);
   EXPECT_EQ(bound(step, &far), 1.0);
+}
+
+// A cloth triangle `gap` above a wide obstacle triangle, dropped 1 m onto it: the bound, and
+// the gap it leaves (the triangles are parallel, so every vertex keeps the same gap).
+std::pair<double, double> drop_onto_obstacle(double gap, double reach) {
+  ClothModel model;
+  model.mass = {1.0, 1.0, 1.0};
+  model.pinned = {0, 0, 0};
+  model.triangles = {{0, 1, 2}};
+  TriangleMesh floor_mesh;
+  floor_mesh.vertices = {Vec3(-1.0, 0.0, -1.0), Vec3(1.0, 0.0, -1.0), Vec3(0.0, 0.0, 1.0)};
+  floor_mesh.triangles = {{0, 1, 2}};
+  const ContactGeometry geometry = build_contact_geometry(model, {floor_mesh}, false).value();
+  Eigen::VectorXd cloth(9);
+  cloth << 0.0, gap, 0.0, 0.1, gap, 0.0, 0.0, gap, 0.1;
+  Eigen::VectorXd drop = Eigen::VectorXd::Zero(9);
+  for (int v = 0; v < 3; ++v) drop[3 * v + 1] = -1.0;
+  ContactPairFinder finder;
+  std::vector<ContactPair> pairs;
+  EXPECT_TRUE(finder.gather(geometry, cloth, &drop, reach, std::nullopt, pairs));
+  const double bound = earliest_contact(geometry, pairs, cloth, drop, 0.0, reach, 0.1);
+  return {bound, gap - bound};
+}
+
+TEST(EarliestContact, NoGapClosesBelowTheSmallestStartGap) {
+  // A thickness of 2 mm: no gap may close below 2 nm, where computed distances of primitives
+  // metres long are rounding. From 10 nm, a tenth of what lies above 2 nm is kept.
+  const double reach = 2e-3, smallest = kMinStartGapFraction * reach;
+  const auto [bound, left] = drop_onto_obstacle(1e-8, reach);
+  EXPECT_GT(bound, 0.0);
+  EXPECT_GE(left, smallest + 0.1 * (1e-8 - smallest) - 1e-15);
+  // Already below it: no move toward the obstacle at all.
+  EXPECT_EQ(drop_onto_obstacle(0.5 * smallest, reach).first, 0.0);
 }
 
 }  // namespace

@@ -168,11 +168,13 @@ double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>
     // sets hold many such pairs (gather_region.h: complete for a region larger than one
     // step), and Additive CCD would spend two distance evaluations on each to find it.
     if (!moves || contact_box_gap(pair, start, end) > reach) continue;
-    // A sphere's gap is its centre's distance less the radius, which loses the digits the two
-    // share: it is kept above the smallest gap a start may have, far above that rounding (an
-    // obstacle closing in on pinned cloth, a tenth of the gap left each time, would otherwise
-    // bring it to a gap of zero, which the barrier cannot take).
-    const double floor = pair.thickness > 0.0 ? kMinStartGapFraction * reach : 0.0;
+    // No gap closes below the smallest gap a start may have: computed gaps are rounding there
+    // (a sphere's is its centre's distance less the radius, which loses the digits the two
+    // share; a cloth edge stretched to 3 m ending nanometres from a box's corner measured 0
+    // against that corner's edges). An obstacle closing in on pinned cloth, a tenth of the gap
+    // left each time, or the sheet hit by a box jumping through it in a quarter of a frame,
+    // otherwise took a pair to a gap of zero, where the barrier is infinite.
+    const double floor = kMinStartGapFraction * reach;
     if (distance_floor2 != nullptr) {
       // A point of a primitive moves no farther than the farthest of its vertices, so the
       // distance falls by at most the two primitives' largest moves together: if that keeps
@@ -189,7 +191,7 @@ double earliest_contact(const ContactGeometry& g, const std::vector<ContactPair>
     }
     settings.max_time = bound;  // nothing past the bound found so far matters
     AdditiveCcdSettings pair_settings = settings;
-    pair_settings.thickness += pair.thickness + floor;  // a sphere's: the gap to its surface
+    pair_settings.thickness += pair.thickness + floor;  // a sphere's radius: to its surface
     const auto hit = pair.kind == ContactKind::point_triangle
                          ? point_triangle_ccd(start, end, pair_settings)
                          : edge_edge_ccd(start, end, pair_settings);

@@ -79,7 +79,9 @@ class ContactPairFinder {
 
 /// The largest t in (0, 1] such that no pair of `pairs` that comes within `reach` (the contact
 /// distance) on the move gets closer than `min_separation` of its distance at x anywhere on
-/// x + s step, s in [0, t] (conservative: Additive CCD, and the exact bound for the ground).
+/// x + s step, s in [0, t] (conservative: Additive CCD, and the exact bound for the ground),
+/// nor, the ground's aside, within kMinStartGapFraction of `reach` (the smallest gap a start
+/// may have; below it computed gaps are rounding): of what lies above that, min_separation.
 /// The obstacles move by s obstacle_step (3 per obstacle vertex) at the same time, or stay
 /// with nullptr. A pair whose two primitives' swept boxes stay more than `reach` apart is
 /// passed over, as the broad phase would not have listed it for this move. `settings` says how
