@@ -105,14 +105,16 @@ TEST(HostileInputCli, AutoPicksAnIntegratorThatTakesContact) {
 }
 
 // Out of memory is one line that says so (here under a 1 GiB address-space limit, with
-// colliders of two million triangles); never "std::bad_alloc" or a crash. AddressSanitizer
-// reserves terabytes of address space, so this runs in Release only.
+// colliders of two million triangles: boxes, as contact takes a sphere as itself, not as its
+// triangles); never "std::bad_alloc" or a crash. AddressSanitizer reserves terabytes of address
+// space, so this runs in Release only.
 TEST(HostileInputCli, RunningOutOfMemoryIsOneLine) {
   if (animkit::test_support::kUnderSanitizers) GTEST_SKIP() << "ASan needs the address space";
   std::string colliders;
-  for (int i = 0; i < 390; ++i) {
+  for (int i = 0; i < 650; ++i) {  // 650 boxes of 3,072 triangles
     colliders += std::string(i ? "," : "") + R"({"name": "pebble )" + std::to_string(i) +
-                 R"(", "radius": 0.01, "tessellation": 4, "position": [)" +
+                 R"(", "shape": "box", "half_extents": [0.01, 0.01, 0.01], "tessellation": 4,
+                     "position": [)" +
                  std::to_string(-5.0 + 0.03 * i) + ", 0.1, -3]}";
   }
   const fs::path scene = hostile_scene(

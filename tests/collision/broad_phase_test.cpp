@@ -349,6 +349,17 @@ TEST(BroadPhase, RejectsBadInput) {
   bad[13] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(broad_phase.find({grid.mesh, bad, grid.positions}, 0.1, out).error().message,
             "mesh vertex 4 has a non-finite coordinate");
+  const std::vector<double> two_radii = {0.1, 0.1};
+  EXPECT_EQ(broad_phase.find({grid.mesh, grid.positions, grid.positions, &two_radii}, 0.1, out)
+                .error()
+                .message,
+            "mesh vertex radii number 2, expected one per vertex (9)");
+  std::vector<double> radii(9, 0.1);
+  radii[3] = -0.1;
+  EXPECT_EQ(broad_phase.find({grid.mesh, grid.positions, grid.positions, &radii}, 0.1, out)
+                .error()
+                .message,
+            "mesh vertex 3 has a radius that is not finite and >= 0");
   const std::vector<std::array<int, 3>> out_of_range = {{0, 1, 2}, {1, 2, 9}};
   EXPECT_EQ(build_collision_mesh(4, out_of_range).error().message,
             "triangle 1 has vertex 9 outside [0, 4)");

@@ -21,9 +21,9 @@ double contact_radius(const Collider& collider) {
 }
 
 void MovingObstacles::add(Collider collider, int first_vertex, int mesh) {
-  // A sphere turning about its centre covers the same ground: its surface for contact keeps
-  // its first orientation (so its tessellation does not sweep into cloth resting on it), and
-  // friction still feels the spin (begin_substep).
+  // A sphere turning about its centre covers the same ground: contact has its centre alone,
+  // its drawn surface (surface_points) keeps its first orientation, and friction feels the
+  // spin at the surface (ContactGeometry::obstacle_spin, set in begin_substep).
   const bool round = std::holds_alternative<SphereShape>(collider.model().desc.shape);
   surface_rotation_.push_back(round ? std::optional<Quat>(collider.pose().rotation) : std::nullopt);
   poses_.push_back(collider.pose());

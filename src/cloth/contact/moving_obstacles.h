@@ -12,8 +12,9 @@
 // the face itself), or under an obstacle vertex, or across an obstacle edge, gets the part of
 // that face's, vertex's or edge's move along the normal which it lacks to stay there
 // (frictionless contact pushes along the normal only), or, when that lets them go less far,
-// the obstacle point's whole move (carried with it). Obstacles and cloth then move
-// together, linearly, by the largest fraction of both moves at which Additive CCD
+// the obstacle point's whole move (carried with it); a sphere pushes each cloth triangle in its
+// way along the direction from its centre to the triangle's nearest point. Obstacles and cloth
+// then move together, linearly, by the largest fraction of both moves at which Additive CCD
 // (collision/ccd.h) keeps every pair (obstacle-cloth, cloth-cloth, cloth-ground) at least
 // min_separation of its distance before the move: the same rule as the cloth's own step bound,
 // so every iterate stays intersection-free. Newton then relaxes the pushed cloth; the substep is
