@@ -9,11 +9,11 @@
 // fixed (its energy differences stay those of one function); between iterates the obstacles
 // advance along their lines and push the cloth in their way along: every free particle the
 // obstacles' move would bring closer than half the contact distance to an obstacle face (over
-// the face itself), or under an obstacle vertex, or across an obstacle edge, gets the part of
-// that face's, vertex's or edge's move along the normal which it lacks to stay there
-// (frictionless contact pushes along the normal only), or, when that lets them go less far,
-// the obstacle point's whole move (carried with it); a sphere pushes each cloth triangle in its
-// way along the direction from its centre to the triangle's nearest point. Obstacles and cloth
+// the face itself), or near an obstacle vertex (a sphere's centre standing for its surface),
+// or across an obstacle edge, gets the part of that face's, vertex's or edge's move along the
+// normal (from a vertex: toward the cloth triangle's nearest point) which it lacks to stay
+// there (frictionless contact pushes along the normal only), or, when that lets them go less
+// far, the obstacle point's whole move (carried with it). Obstacles and cloth
 // then move together, linearly, by the largest fraction of both moves at which Additive CCD
 // (collision/ccd.h) keeps every pair (obstacle-cloth, cloth-cloth, cloth-ground) at least
 // min_separation of its distance before the move: the same rule as the cloth's own step bound,
