@@ -21,6 +21,7 @@
 #include "../../src/cloth/contact/contact_candidates.h"
 #include "../../src/cloth/contact/contact_pair.h"
 #include "animkit/cloth/cloth_world.h"
+#include "animkit/collision/psd_projection.h"
 #include "animkit/io/cloth_scene_file.h"
 
 namespace animkit {
@@ -111,6 +112,11 @@ TEST(SphereContact, GaussNewtonIsTheProjectedHessianOnlyAtAVertex) {
     const auto gn = cloth_block(contact_barrier_gauss_newton_hessian(pair, p[region], 0.0, b));
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 9, 9>> eig(projected);
     EXPECT_GT(eig.eigenvalues().minCoeff(), -1e-9 * projected.norm());
+    // The cloth's block of the exact Hessian, projected (by the edge's block alone where the
+    // nearest point is on an edge: the same matrix).
+    const Eigen::Matrix<double, 9, 9> direct = project_to_psd(
+        cloth_block(contact_barrier_derivatives(pair, p[region], 0.0, b, false).hessian));
+    EXPECT_LT((projected - direct).norm(), 1e-9 * direct.norm()) << "region " << region;
     if (vertex) {
       EXPECT_LT((projected - gn).norm(), 1e-9 * gn.norm());
       continue;

@@ -26,6 +26,42 @@ SphereGap sphere_gap(double q, double radius) {
   return {(s - radius) * (s - radius), 1.0 - radius / s, radius / (2.0 * s * q)};
 }
 
+// A sphere's pair's Hessian onto the PSD cone where Newton sees it. The centre is no unknown (a
+// collider follows its motion): only the cloth's block enters Newton's matrix, and that block
+// alone needs to be PSD. With the triangle's nearest point on an edge, the third vertex has
+// no part in the gap: the edge's 6 x 6 block is projected, at a third of the 9 x 9's cost.
+void project_sphere_pair(const std::array<Vec3, 4>& p, Eigen::Matrix<double, 12, 12>& hessian) {
+  std::array<int, 2> edge{-1, -1};  // slots of the edge's vertices
+  switch (point_triangle_distance_type(p[0], p[1], p[2], p[3])) {
+    case PointTriangleDistanceType::kEdgeAB:
+      edge = {1, 2};
+      break;
+    case PointTriangleDistanceType::kEdgeBC:
+      edge = {2, 3};
+      break;
+    case PointTriangleDistanceType::kEdgeCA:
+      edge = {3, 1};
+      break;
+    default:
+      break;
+  }
+  if (edge[0] < 0) {
+    const Eigen::Matrix<double, 9, 9> cloth = hessian.bottomRightCorner<9, 9>();
+    hessian.setZero();
+    hessian.bottomRightCorner<9, 9>() = project_to_psd(cloth);
+    return;
+  }
+  Eigen::Matrix<double, 6, 6> block;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      block.block<3, 3>(3 * i, 3 * j) = hessian.block<3, 3>(3 * edge[i], 3 * edge[j]);
+  block = project_to_psd(block);
+  hessian.setZero();
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      hessian.block<3, 3>(3 * edge[i], 3 * edge[j]) = block.block<3, 3>(3 * i, 3 * j);
+}
+
 StencilDerivatives<4> distance_derivatives(const ContactPair& pair, const std::array<Vec3, 4>& p,
                                            double ground) {
   switch (pair.kind) {
@@ -148,11 +184,7 @@ StencilDerivatives<4> contact_barrier_derivatives(const ContactPair& pair,
   }
   if (!project) return out;
   if (pair.thickness > 0.0) {
-    // A sphere's centre is no unknown (a collider follows its motion): only the cloth's 9 x 9
-    // block enters Newton's matrix, and that block alone needs to be PSD.
-    const Eigen::Matrix<double, 9, 9> cloth = out.hessian.bottomRightCorner<9, 9>();
-    out.hessian.setZero();
-    out.hessian.bottomRightCorner<9, 9>() = project_to_psd(cloth);
+    project_sphere_pair(p, out.hessian);
     return out;
   }
   out.hessian = project_to_psd(out.hessian);
