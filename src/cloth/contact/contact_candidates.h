@@ -26,9 +26,9 @@ struct ContactGeometry {
   /// Where the obstacles were at the substep's start (set by the contact term's prepare()).
   Eigen::VectorXd obstacle_start_positions;
   /// How far the collider's material point at each obstacle vertex moves over the substep
-  /// (3 per vertex, world, m): the surface's own move from start to end, plus the spin a
-  /// sphere turning about its centre keeps out of its surface (see MovingObstacles). What
-  /// friction measures the cloth's sliding against; zero for fixed meshes.
+  /// (3 per vertex, world, m): the surface's own move from start to end (a sphere's centre:
+  /// its move alone, its spin being obstacle_spin's). What friction measures the cloth's
+  /// sliding against; zero for fixed meshes.
   Eigen::VectorXd obstacle_motion;
   /// Per obstacle vertex, m: a sphere collider's radius for its centre, the one vertex by
   /// which it takes part in contact (its exact surface, not a tessellation); 0 for the
