@@ -12,6 +12,15 @@ AlignedBox united(const AlignedBox& a, const AlignedBox& b) {
   return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)};
 }
 
+// The union of boxes[order[first]], ..., boxes[order[first + count - 1]], count >= 1.
+AlignedBox union_of(const AlignedBox* boxes, const std::vector<int>& order, int first,
+                    int count) {
+  AlignedBox box = boxes[order[static_cast<std::size_t>(first)]];
+  for (int k = first + 1; k < first + count; ++k)
+    box = united(box, boxes[order[static_cast<std::size_t>(k)]]);
+  return box;
+}
+
 double surface_area(const AlignedBox& box) {
   const Vec3 d = box.hi - box.lo;
   return 2.0 * (d.x() * d.y() + d.y() * d.z() + d.z() * d.x());
@@ -33,9 +42,7 @@ void BoxTree::build(const AlignedBox* boxes, int count) {
 int BoxTree::build_node(const AlignedBox* boxes, int begin, int end) {
   const int index = static_cast<int>(nodes_.size());
   nodes_.emplace_back();
-  AlignedBox box = boxes[order_[static_cast<std::size_t>(begin)]];
-  for (int k = begin + 1; k < end; ++k)
-    box = united(box, boxes[order_[static_cast<std::size_t>(k)]]);
+  const AlignedBox box = union_of(boxes, order_, begin, end - begin);
   nodes_[static_cast<std::size_t>(index)].box = box;
   if (end - begin <= kLeafSize) {
     nodes_[static_cast<std::size_t>(index)].first = begin;
@@ -64,10 +71,7 @@ double BoxTree::refit(const AlignedBox* boxes) {
   // Children follow their parent in pre-order, so a reverse pass meets them first.
   for (auto node = nodes_.rbegin(); node != nodes_.rend(); ++node) {
     if (node->count > 0) {
-      AlignedBox box = boxes[order_[static_cast<std::size_t>(node->first)]];
-      for (int k = node->first + 1; k < node->first + node->count; ++k)
-        box = united(box, boxes[order_[static_cast<std::size_t>(k)]]);
-      node->box = box;
+      node->box = union_of(boxes, order_, node->first, node->count);
     } else {
       node->box = united(nodes_[static_cast<std::size_t>(node->first)].box,
                          nodes_[static_cast<std::size_t>(node->right)].box);

@@ -24,7 +24,7 @@ void MovingObstacles::add(Collider collider, int first_vertex, int mesh) {
   // A sphere turning about its centre covers the same ground: contact has its centre alone,
   // its drawn surface (surface_points) keeps its first orientation, and friction feels the
   // spin at the surface (ContactGeometry::obstacle_spin, set in begin_substep).
-  const bool round = std::holds_alternative<SphereShape>(collider.model().desc.shape);
+  const bool round = contact_radius(collider) > 0.0;
   surface_rotation_.push_back(round ? std::optional<Quat>(collider.pose().rotation) : std::nullopt);
   poses_.push_back(collider.pose());
   aims_.push_back(collider.pose());
