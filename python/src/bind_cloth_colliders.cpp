@@ -20,10 +20,8 @@ namespace {
 // The library's names (kBarrierHessianNames); animkit.Error for another.
 BarrierHessian barrier_hessian_from(const std::string& name) {
   if (const auto hessian = barrier_hessian_named(name)) return *hessian;
-  std::string expected;
-  for (const std::string_view known : kBarrierHessianNames)
-    expected += (expected.empty() ? "" : ", ") + std::string(known);
-  raise("unknown hessian '" + name + "' (expected one of: " + expected + ")");
+  raise("unknown hessian '" + name + "' (expected one of: " + joined_names(kBarrierHessianNames) +
+        ")");
 }
 
 // ---- colliders ----

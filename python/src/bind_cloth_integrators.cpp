@@ -20,7 +20,9 @@ constexpr Named<LinearSolverKind> kSolvers[] = {{"direct", LinearSolverKind::dir
                                                 {"pcg", LinearSolverKind::pcg},
                                                 {"multigrid", LinearSolverKind::multigrid}};
 constexpr Named<HessianProjection> kProjections[] = {
-    {"when_indefinite", HessianProjection::when_indefinite}, {"always", HessianProjection::always}};
+    {"when_indefinite", HessianProjection::when_indefinite},
+    {"always", HessianProjection::always},
+    {"with_terms", HessianProjection::with_terms}};
 
 std::string repr_newton(const NewtonSettings& s) {
   return "NewtonSettings(linear_solver='" + enum_name(s.linear_solver, kSolvers) +
@@ -119,8 +121,9 @@ void bind_integrators(py::module_& m) {
              check(s.validate());
              return s;
            }),
-           "linear_solver: 'direct', 'pcg' or 'multigrid'; projection: 'when_indefinite' or "
-           "'always'. Raises animkit.Error for an unknown name or an out-of-range value.",
+           "linear_solver: 'direct', 'pcg' or 'multigrid'; projection: 'when_indefinite', "
+           "'always' or 'with_terms'. Raises animkit.Error for an unknown name or an "
+           "out-of-range value.",
            py::arg("linear_solver") = enum_name(newton.linear_solver, kSolvers),
            py::arg("tolerance") = newton.tolerance,
            py::arg("max_iterations") = newton.max_iterations, py::arg("beta") = newton.beta,
@@ -151,7 +154,9 @@ void bind_integrators(py::module_& m) {
           [](NewtonSettings& s, const std::string& v) {
             s.projection = parse_enum(v, kProjections, "Hessian projection");
           },
-          "'when_indefinite' or 'always'.")
+          "'when_indefinite' (the exact Hessian first, projected where it meets negative "
+          "curvature), 'always' (projected) or 'with_terms' (projected while energy terms "
+          "such as contact or wind join the step: the fast settings' choice).")
       .def_readwrite("record_iterations", &NewtonSettings::record_iterations,
                      "Fill StepReport.iterations.")
       .def_readwrite("velocity_tolerance", &NewtonSettings::velocity_tolerance,

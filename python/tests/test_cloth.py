@@ -195,6 +195,8 @@ def test_integrator_settings():
     assert repr(newton).startswith("NewtonSettings(linear_solver='pcg', tolerance=1e-06, ")
     newton.linear_solver = "multigrid"
     assert newton.linear_solver == "multigrid"
+    newton.projection = "with_terms"
+    assert newton.projection == "with_terms"
     assert newton.velocity_tolerance == 0.0
     assert animkit.NewtonSettings(velocity_tolerance=1e-3).velocity_tolerance == 1e-3
     assert repr(animkit.NewtonSettings(velocity_tolerance=1e-3)).endswith(
@@ -210,7 +212,7 @@ def test_integrator_settings():
 def test_integrator_settings_errors():
     with pytest.raises(animkit.Error, match="unknown linear solver 'lu'.*direct, pcg, multigrid"):
         animkit.NewtonSettings(linear_solver="lu")
-    with pytest.raises(animkit.Error, match="when_indefinite, always"):
+    with pytest.raises(animkit.Error, match="when_indefinite, always, with_terms"):
         animkit.NewtonSettings(projection="never")
     with pytest.raises(animkit.Error):
         animkit.NewtonSettings(tolerance=2.0)
@@ -245,6 +247,7 @@ def test_scene_defaults_and_builtins():
     cotton = animkit.ClothScene(cloth=animkit.GridCloth(material=animkit.material("cotton")))
     assert cotton.integrator_name == "implicit-multigrid"
     assert cotton.integrator.velocity_tolerance == 1e-3
+    assert cotton.integrator.projection == "with_terms"
     names = animkit.builtin_cloth_scene_names()
     assert names[0] == "lab" and "drape-sphere" in names
     for name in names:

@@ -260,7 +260,8 @@ bool ImplicitEuler::next_lagging_pass(const GradientStop& stop, double& gradient
 // Returns the slope grad g . dx < 0.
 double ImplicitEuler::newton_direction(double gradient_norm, double relative_gradient,
                                        IterationRecord& record, StepReport& report) {
-  bool projected = options_.projection == HessianProjection::always;
+  bool projected = options_.projection == HessianProjection::always ||
+                   (options_.projection == HessianProjection::with_terms && potential_.has_terms());
   double slope = 0.0;
   for (bool retry = false;; retry = true) {
     auto t = StageClock::now();

@@ -205,10 +205,8 @@ class SceneReader {
     if (auto name = fields.string("hessian")) {
       const std::optional<BarrierHessian> hessian = barrier_hessian_named(*name);
       if (!hessian) {
-        std::string expected;
-        for (const std::string_view known : kBarrierHessianNames)
-          expected += (expected.empty() ? "" : ", ") + std::string(known);
-        fields.error("hessian", "expected one of " + expected + ", got " + quote_input(*name));
+        fields.error("hessian", "expected one of " + joined_names(kBarrierHessianNames) +
+                                    ", got " + quote_input(*name));
       }
       contact.hessian = *hessian;
     }
@@ -258,6 +256,21 @@ class SceneReader {
                               quote_input(integrator_entry(simulation.integrator).name));
       }
       newton->*setting = *value;
+    }
+    if (auto name = fields.string("projection")) {
+      auto* newton = std::get_if<NewtonSettings>(&simulation.integrator);
+      if (desc.choose_integrator)
+        fields.error("projection", "applies to a named Newton integrator, not 'auto'");
+      if (!newton) {
+        fields.error("projection", "applies to the Newton integrators (implicit-*) only, not " +
+                                       quote_input(integrator_entry(simulation.integrator).name));
+      }
+      const auto projection = enum_named<HessianProjection>(kHessianProjectionNames, *name);
+      if (!projection) {
+        fields.error("projection", "expected one of " + joined_names(kHessianProjectionNames) +
+                                       ", got " + quote_input(*name));
+      }
+      newton->projection = *projection;
     }
     simulation.substeps = fields.integer("substeps").value_or(simulation.substeps);
     fields.finish();

@@ -182,6 +182,7 @@ Result<std::string> cloth_scene_json(const ClothWorldDesc& scene) {
       if (newton->velocity_tolerance > 0.0)
         solver["velocity_tolerance"] = newton->velocity_tolerance;
       if (newton->linear_forcing > 0.0) solver["linear_forcing"] = newton->linear_forcing;
+      solver["projection"] = std::string(enum_name(kHessianProjectionNames, newton->projection));
     }
   }
   solver["substeps"] = scene.simulation.substeps;

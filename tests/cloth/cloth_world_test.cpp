@@ -95,6 +95,8 @@ TEST(ClothWorld, FastContactSettingsFollowTheReference) {
   EXPECT_EQ(fast_desc.contact.hessian, BarrierHessian::adaptive);
   EXPECT_EQ(fast_newton.velocity_tolerance, 1e-3);
   EXPECT_EQ(fast_newton.linear_forcing, 0.1);
+  EXPECT_EQ(reference_newton.projection, HessianProjection::when_indefinite);
+  EXPECT_EQ(fast_newton.projection, HessianProjection::with_terms);
   for (const NewtonSettings* newton : {&reference_newton, &fast_newton}) {
     EXPECT_EQ(newton->linear_solver, LinearSolverKind::multigrid);
     EXPECT_EQ(newton->tolerance, 1e-4);

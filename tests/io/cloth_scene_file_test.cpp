@@ -98,19 +98,26 @@ TEST(ClothSceneFile, ReadsAMeshClothAndAMeshColliderBesideTheFile) {
   EXPECT_EQ(std::get<MeshShape>(scene->colliders[0].shape).mesh.triangles.size(), 4u);
 }
 
-TEST(ClothSceneFile, ReadsTheVelocityToleranceAndTheLinearForcing) {
+TEST(ClothSceneFile, ReadsTheVelocityToleranceTheLinearForcingAndTheProjection) {
   const auto scene = parse(
       R"({"solver": {"integrator": "implicit-multigrid", "velocity_tolerance": 1e-3,
-                     "linear_forcing": 0.1}, "contact": {"hessian": "adaptive"}})");
+                     "linear_forcing": 0.1, "projection": "always"},
+          "contact": {"hessian": "adaptive"}})");
   ASSERT_TRUE(scene) << scene.error().message;
   const auto& newton = std::get<NewtonSettings>(scene->simulation.integrator);
   EXPECT_EQ(newton.velocity_tolerance, 1e-3);
   EXPECT_EQ(newton.linear_forcing, 0.1);
+  EXPECT_EQ(newton.projection, HessianProjection::always);
+  const auto exact_first =
+      parse(R"({"solver": {"integrator": "implicit-pcg", "projection": "when_indefinite"}})");
+  ASSERT_TRUE(exact_first) << exact_first.error().message;
+  EXPECT_EQ(std::get<NewtonSettings>(exact_first->simulation.integrator).projection,
+            HessianProjection::when_indefinite);
   EXPECT_EQ(scene->contact.hessian, BarrierHessian::adaptive);
 }
 
 // The fast settings (use_fast_settings): Newton, multigrid, 1e-4 or the velocity stop at
-// 1e-3, CG to 10%.
+// 1e-3, CG to 10%, the projected Hessian at once with contact.
 void expect_fast_settings(const ClothWorldDesc& world) {
   const auto* newton = std::get_if<NewtonSettings>(&world.simulation.integrator);
   ASSERT_NE(newton, nullptr);
@@ -118,6 +125,7 @@ void expect_fast_settings(const ClothWorldDesc& world) {
   EXPECT_EQ(newton->tolerance, 1e-4);
   EXPECT_EQ(newton->velocity_tolerance, 1e-3);
   EXPECT_EQ(newton->linear_forcing, 0.1);
+  EXPECT_EQ(newton->projection, HessianProjection::with_terms);
 }
 
 TEST(ClothSceneFile, WithoutASolverContactSolvesWithTheFastSettings) {
@@ -256,6 +264,14 @@ INSTANTIATE_TEST_SUITE_P(
                  "only, not 'vbd'"},
         BadScene{R"({"solver": {"integrator": "implicit-pcg", "linear_forcing": 1}})",
                  "linear forcing must be in [0, 1), got 1"},
+        BadScene{R"({"solver": {"integrator": "implicit-pcg", "projection": "never"}})",
+                 "solver.projection: expected one of when_indefinite, always, with_terms, got "
+                 "'never'"},
+        BadScene{R"({"solver": {"integrator": "vbd", "projection": "always"}})",
+                 "solver.projection: applies to the Newton integrators (implicit-*) only, not "
+                 "'vbd'"},
+        BadScene{R"({"solver": {"integrator": "auto", "projection": "always"}})",
+                 "solver.projection: applies to a named Newton integrator, not 'auto'"},
         BadScene{R"({"dt": 1e400})",
                  "not valid JSON ([json.exception.out_of_range.406] number overflow parsing "
                  "'1e400')"},

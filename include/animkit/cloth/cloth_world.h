@@ -81,11 +81,13 @@ constexpr int kContactNewtonIterations = 300;
 /// The fast settings (docs/contact.md), which a physical sheet or one with contact takes unless
 /// its solver is named (fast_by_default): Newton with the multigrid preconditioner to
 /// 1e-4 relative gradient or IPC's velocity stop at 1e-3 (NewtonSettings::velocity_tolerance),
-/// CG to a fixed 10% residual (linear_forcing) and the adaptive barrier Hessian
-/// (BarrierHessian::adaptive). Every iterate stays intersection-free as with IPC's own
-/// settings (projected Hessian, 1e-4 alone), which remain the reference they are measured
-/// against: on drape-sphere at 41 x 41, 1.85 times faster over the run, every step within
-/// 18 mm of the reference's from the same state (median 0.03 mm; docs/contact.md).
+/// CG to a fixed 10% residual (linear_forcing), the adaptive barrier Hessian
+/// (BarrierHessian::adaptive) and, while contact or wind join a step, the projected spring
+/// Hessian at once (HessianProjection::with_terms). Every iterate stays intersection-free as
+/// with IPC's own settings (projected Hessian, 1e-4 alone), which remain the reference they
+/// are measured against: on drape-sphere at 41 x 41, 1.85 times faster over the run, every
+/// step within 18 mm of the reference's from the same state (median 0.03 mm;
+/// docs/contact.md).
 void use_fast_settings(ClothWorldDesc& world);
 
 /// IPC's own settings, the reference quality mode the fast ones are measured against: Newton

@@ -25,6 +25,7 @@
 #include "animkit/cloth/cloth_model.h"
 #include "animkit/cloth/energy_term.h"
 #include "animkit/collision/collider.h"
+#include "animkit/core/enum_names.h"
 #include "animkit/core/result.h"
 #include "animkit/core/triangle_mesh.h"
 #include "animkit/core/validation.h"
@@ -76,9 +77,7 @@ inline std::string_view barrier_hessian_name(BarrierHessian hessian) {
 }
 /// The choice called `name`, or none.
 inline std::optional<BarrierHessian> barrier_hessian_named(std::string_view name) {
-  for (std::size_t i = 0; i < kBarrierHessianNames.size(); ++i)
-    if (kBarrierHessianNames[i] == name) return static_cast<BarrierHessian>(i);
-  return std::nullopt;
+  return enum_named<BarrierHessian>(kBarrierHessianNames, name);
 }
 
 /// The smallest gap, as a fraction of the thickness, a contact pair may start at

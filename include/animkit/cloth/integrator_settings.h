@@ -3,9 +3,12 @@
 // uses. The implicit ones all minimize the same incremental potential g (incremental_potential.h)
 // and stop on the same test, |grad g| <= tolerance |grad g at the prediction y| (or the rounding
 // floor, whichever is higher), so their results and costs can be compared one to one.
+#include <array>
 #include <optional>
+#include <string_view>
 #include <variant>
 
+#include "animkit/core/enum_names.h"
 #include "animkit/core/result.h"
 
 namespace animkit {
@@ -45,7 +48,18 @@ enum class HessianProjection {
   /// The projected Hessian every iteration: SPD by construction, but only linearly
   /// convergent where springs are compressed.
   always,
+  /// `always` while energy terms join the step (contact, friction, wind: any EnergyTerm),
+  /// `when_indefinite` otherwise: the fast settings' choice (use_fast_settings). Cloth
+  /// folding onto colliders meets negative curvature in most iterations, and the exact
+  /// attempt when_indefinite makes first is thrown away there; a free sheet's exact
+  /// iterations mostly succeed, and its converge quadratically (docs/contact.md, "The
+  /// projected Hessian at once").
+  with_terms,
 };
+
+/// Each HessianProjection's name (scene files; enum_names.h), in the enum's order.
+inline constexpr std::array<std::string_view, 3> kHessianProjectionNames = {
+    "when_indefinite", "always", "with_terms"};
 
 /// Implicit Euler by Newton's method with a backtracking line search (docs/implicit-step.md).
 struct NewtonSettings {

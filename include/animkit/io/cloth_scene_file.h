@@ -25,7 +25,8 @@
 //   "wind": {"velocity": [x, y, z], "gust": [x, y, z], "gust_frequency": 0.5,
 //            "air_density": 1.2, "normal_drag": 1.2, "tangential_drag": 0.02},
 //   "solver": {"integrator": "implicit-pcg", "tolerance": 1e-6, "substeps": 0,
-//              "velocity_tolerance": 0, "linear_forcing": 0},   (the last two: Newton's only)
+//              "velocity_tolerance": 0, "linear_forcing": 0,   (these three: Newton's only)
+//              "projection": "when_indefinite" | "always" | "with_terms"},
 //   "dt": 0.0166667, "frames": 300
 // }
 //
