@@ -21,6 +21,9 @@ Eigen::Matrix<double, N, N> clamp_eigenvalues(const Eigen::Matrix<double, N, N>&
 
 }  // namespace
 
+Eigen::Matrix<double, 5, 5> project_to_psd(const Eigen::Matrix<double, 5, 5>& matrix) {
+  return clamp_eigenvalues<5>(matrix);
+}
 Eigen::Matrix<double, 6, 6> project_to_psd(const Eigen::Matrix<double, 6, 6>& matrix) {
   return clamp_eigenvalues<6>(matrix);
 }

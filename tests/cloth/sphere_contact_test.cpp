@@ -15,12 +15,14 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "../../src/cloth/contact/contact_candidates.h"
 #include "../../src/cloth/contact/contact_pair.h"
 #include "animkit/cloth/cloth_world.h"
+#include "animkit/collision/distance_type.h"
 #include "animkit/collision/psd_projection.h"
 #include "animkit/io/cloth_scene_file.h"
 
@@ -133,6 +135,35 @@ TEST(SphereContact, GaussNewtonIsTheProjectedHessianOnlyAtAVertex) {
     EXPECT_GT(turn.dot(projected * turn), 1e3 * std::abs(turn.dot(gn * turn)))
         << "region " << region;
   }
+}
+
+// Over a face the projection works on the five directions the gap depends on: the same matrix
+// as projecting the whole 9 x 9 block, for triangles of any shape, size and pose.
+TEST(SphereContact, TheFaceProjectionInFiveDirectionsIsTheWholeBlocks) {
+  const ContactPair pair = sphere_pair();
+  const LogBarrier b = barrier();
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto vec = [&] { return Vec3(unit(random), unit(random), unit(random)); };
+  int compared = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::array<Vec3, 4> p;
+    for (int v = 1; v < 4; ++v) p[v] = vec();
+    const Vec3 normal = (p[2] - p[1]).cross(p[3] - p[1]).normalized();
+    Eigen::Vector3d weight = (vec().array() + 1.5).matrix();  // inside: all positive
+    weight /= weight.sum();
+    const Vec3 foot = weight[0] * p[1] + weight[1] * p[2] + weight[2] * p[3];
+    p[0] = foot + (kRadius + 0.05 * kDhat * (1.0 + unit(random))) * normal;
+    if (point_triangle_distance_type(p[0], p[1], p[2], p[3]) !=
+        PointTriangleDistanceType::kInterior)
+      continue;
+    const auto projected = cloth_block(contact_barrier_derivatives(pair, p, 0.0, b).hessian);
+    const Eigen::Matrix<double, 9, 9> direct =
+        project_to_psd(cloth_block(contact_barrier_derivatives(pair, p, 0.0, b, false).hessian));
+    EXPECT_LT((projected - direct).norm(), 1e-9 * direct.norm()) << "trial " << trial;
+    ++compared;
+  }
+  EXPECT_GT(compared, 150);
 }
 
 // One cloth triangle (particles 0 to 2) and a sphere of radius 0.5 m centred 1 m above it.

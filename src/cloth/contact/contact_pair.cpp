@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "animkit/collision/distance_type.h"
 #include "animkit/collision/edge_edge_mollifier.h"
@@ -26,13 +27,43 @@ SphereGap sphere_gap(double q, double radius) {
   return {(s - radius) * (s - radius), 1.0 - radius / s, radius / (2.0 * s * q)};
 }
 
+// The rows of an orthonormal basis of the directions a sphere's gap over the face of the triangle
+// (p[1], p[2], p[3]) depends on to second order, or none for a degenerate triangle. That gap is
+// the centre's height s over the triangle's plane. Moving the corners along the normal n (three
+// directions) lifts and tilts the plane; moving them within it changes s only together with a
+// tilt, through the point under the centre, sum_j beta_j u_j (beta its barycentric coordinates):
+// a tilted plane slid under the centre rises or falls there. Nothing else moves s at first or
+// second order, so the 9 x 9 block is B^T K B with K = B H B^T its 5 x 5 part.
+std::optional<Eigen::Matrix<double, 5, 9>> face_gap_basis(const std::array<Vec3, 4>& p) {
+  const Vec3 e1 = p[2] - p[1], e2 = p[3] - p[1], to_centre = p[0] - p[1];
+  const Vec3 normal = e1.cross(e2);
+  const double d00 = e1.squaredNorm(), d01 = e1.dot(e2), d11 = e2.squaredNorm();
+  const double twice_area2 = normal.squaredNorm();  // d00 d11 - d01^2
+  if (!(twice_area2 > 1e-12 * d00 * d11)) return std::nullopt;
+  const double d20 = to_centre.dot(e1), d21 = to_centre.dot(e2);
+  const double b2 = (d11 * d20 - d01 * d21) / twice_area2;
+  const double b3 = (d00 * d21 - d01 * d20) / twice_area2;
+  const Eigen::Vector3d beta = Eigen::Vector3d(1.0 - b2 - b3, b2, b3).normalized();
+  const Vec3 n = normal.normalized(), t1 = e1.normalized(), t2 = n.cross(t1);
+  Eigen::Matrix<double, 5, 9> basis = Eigen::Matrix<double, 5, 9>::Zero();
+  for (int v = 0; v < 3; ++v) {
+    basis.block<1, 3>(v, 3 * v) = n.transpose();
+    basis.block<1, 3>(3, 3 * v) = beta[v] * t1.transpose();
+    basis.block<1, 3>(4, 3 * v) = beta[v] * t2.transpose();
+  }
+  return basis;
+}
+
 // A sphere's pair's Hessian onto the PSD cone where Newton sees it. The centre is no unknown (a
 // collider follows its motion): only the cloth's block enters Newton's matrix, and that block
 // alone needs to be PSD. With the triangle's nearest point on an edge, the third vertex has
 // no part in the gap: the edge's 6 x 6 block is projected, at a third of the 9 x 9's cost.
+// Over the face the block lives in five directions (face_gap_basis), whose 5 x 5 part is
+// projected instead: the same matrix, since the basis is orthonormal.
 void project_sphere_pair(const std::array<Vec3, 4>& p, Eigen::Matrix<double, 12, 12>& hessian) {
   std::array<int, 2> edge{-1, -1};  // slots of the edge's vertices
-  switch (point_triangle_distance_type(p[0], p[1], p[2], p[3])) {
+  const PointTriangleDistanceType type = point_triangle_distance_type(p[0], p[1], p[2], p[3]);
+  switch (type) {
     case PointTriangleDistanceType::kEdgeAB:
       edge = {1, 2};
       break;
@@ -48,7 +79,14 @@ void project_sphere_pair(const std::array<Vec3, 4>& p, Eigen::Matrix<double, 12,
   if (edge[0] < 0) {
     const Eigen::Matrix<double, 9, 9> cloth = hessian.bottomRightCorner<9, 9>();
     hessian.setZero();
-    hessian.bottomRightCorner<9, 9>() = project_to_psd(cloth);
+    const auto basis =
+        type == PointTriangleDistanceType::kInterior ? face_gap_basis(p) : std::nullopt;
+    if (basis) {
+      const Eigen::Matrix<double, 5, 5> part = *basis * cloth * basis->transpose();
+      hessian.bottomRightCorner<9, 9>() = basis->transpose() * project_to_psd(part) * *basis;
+    } else {
+      hessian.bottomRightCorner<9, 9>() = project_to_psd(cloth);
+    }
     return;
   }
   Eigen::Matrix<double, 6, 6> block;
