@@ -111,6 +111,33 @@ TEST(ClothWorld, FastContactSettingsFollowTheReference) {
   }
 }
 
+// with_terms projects at once while an energy term (contact here) joins the step, and tries the
+// exact Hessian first without one: the iterates of `always` and of `when_indefinite`.
+TEST(ClothWorld, ProjectingWithTermsFollowsWhetherTermsJoinTheStep) {
+  const auto positions_after = [](ClothWorldDesc desc, HessianProjection projection) {
+    std::get<NewtonSettings>(desc.simulation.integrator).projection = projection;
+    auto world = build_cloth_world(desc);
+    EXPECT_TRUE(world) << world.error().message;
+    for (int frame = 0; frame < 15 && world; ++frame)
+      EXPECT_TRUE(world->simulator.step(1.0 / 30.0));
+    return world ? world->simulator.state().positions : Eigen::VectorXd();
+  };
+  using enum HessianProjection;
+  ClothWorldDesc contact = sheet_over_ball();  // in cotton: it lands and folds on the ball
+  auto& grid = std::get<GridClothOptions>(contact.cloth);
+  grid.material = find_material("cotton")->material;
+  grid.gravity = 9.81;
+  use_fast_settings(contact);
+  EXPECT_EQ(positions_after(contact, with_terms), positions_after(contact, always));
+  EXPECT_NE(positions_after(contact, with_terms), positions_after(contact, when_indefinite));
+  ClothWorldDesc hanging = contact;  // the same sheet from its two corners, touching nothing
+  hanging.colliders.clear();
+  hanging.ground.reset();
+  std::get<GridClothOptions>(hanging.cloth).pins = GridPins::corners;
+  EXPECT_EQ(positions_after(hanging, with_terms), positions_after(hanging, when_indefinite));
+  EXPECT_NE(positions_after(hanging, with_terms), positions_after(hanging, always));
+}
+
 // A physical sheet with nothing to touch takes the fast settings by default (fast_by_default);
 // the lab's cloth keeps the lab's solver. Cotton falling from flat between two pins, each step
 // from the same state as Newton solved tightly (a direct solve to 1e-10): within 0.1 mm of it

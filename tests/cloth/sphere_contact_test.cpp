@@ -139,7 +139,7 @@ TEST(SphereContact, GaussNewtonIsTheProjectedHessianOnlyAtAVertex) {
 
 // Over a face the projection works on the five directions the gap depends on: the same matrix
 // as projecting the whole 9 x 9 block, for triangles of any shape, size and pose.
-TEST(SphereContact, TheFaceProjectionInFiveDirectionsIsTheWholeBlocks) {
+TEST(SphereContact, AFacesFiveDirectionsProjectAsTheWholeBlock) {
   const ContactPair pair = sphere_pair();
   const LogBarrier b = barrier();
   std::mt19937 random(7);

@@ -52,8 +52,8 @@ enum class HessianProjection {
   /// `when_indefinite` otherwise: the fast settings' choice (use_fast_settings). Cloth
   /// folding onto colliders meets negative curvature in most iterations, and the exact
   /// attempt when_indefinite makes first is thrown away there; a free sheet's exact
-  /// iterations mostly succeed, and its converge quadratically (docs/contact.md, "The
-  /// projected Hessian at once").
+  /// iterations mostly succeed and converge quadratically (docs/contact.md, "The projected
+  /// Hessian at once with contact").
   with_terms,
 };
 
