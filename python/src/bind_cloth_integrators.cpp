@@ -19,10 +19,18 @@ namespace {
 constexpr Named<LinearSolverKind> kSolvers[] = {{"direct", LinearSolverKind::direct},
                                                 {"pcg", LinearSolverKind::pcg},
                                                 {"multigrid", LinearSolverKind::multigrid}};
-constexpr Named<HessianProjection> kProjections[] = {
-    {"when_indefinite", HessianProjection::when_indefinite},
-    {"always", HessianProjection::always},
-    {"with_terms", HessianProjection::with_terms}};
+
+// The library's names (kHessianProjectionNames); animkit.Error for another.
+HessianProjection projection_from(const std::string& name) {
+  if (const auto projection = enum_named<HessianProjection>(kHessianProjectionNames, name))
+    return *projection;
+  raise("unknown Hessian projection '" + name +
+        "' (expected one of: " + joined_names(kHessianProjectionNames) + ")");
+}
+
+std::string projection_name(HessianProjection projection) {
+  return std::string(animkit::enum_name(kHessianProjectionNames, projection));
+}
 
 std::string repr_newton(const NewtonSettings& s) {
   return "NewtonSettings(linear_solver='" + enum_name(s.linear_solver, kSolvers) +
@@ -30,7 +38,7 @@ std::string repr_newton(const NewtonSettings& s) {
          ", max_iterations=" + std::to_string(s.max_iterations) + ", beta=" + repr_number(s.beta) +
          ", gamma=" + repr_number(s.gamma) +
          ", max_line_search_steps=" + std::to_string(s.max_line_search_steps) + ", projection='" +
-         enum_name(s.projection, kProjections) +
+         projection_name(s.projection) +
          "', record_iterations=" + (s.record_iterations ? "True" : "False") +
          ", velocity_tolerance=" + repr_number(s.velocity_tolerance) +
          ", linear_forcing=" + repr_number(s.linear_forcing) + ")";
@@ -114,7 +122,7 @@ void bind_integrators(py::module_& m) {
                               beta,
                               gamma,
                               max_line_search_steps,
-                              parse_enum(projection, kProjections, "Hessian projection"),
+                              projection_from(projection),
                               record_iterations,
                               velocity_tolerance,
                               linear_forcing};
@@ -129,7 +137,7 @@ void bind_integrators(py::module_& m) {
            py::arg("max_iterations") = newton.max_iterations, py::arg("beta") = newton.beta,
            py::arg("gamma") = newton.gamma,
            py::arg("max_line_search_steps") = newton.max_line_search_steps,
-           py::arg("projection") = enum_name(newton.projection, kProjections),
+           py::arg("projection") = projection_name(newton.projection),
            py::arg("record_iterations") = newton.record_iterations,
            py::arg("velocity_tolerance") = newton.velocity_tolerance,
            py::arg("linear_forcing") = newton.linear_forcing)
@@ -150,9 +158,9 @@ void bind_integrators(py::module_& m) {
                      "Backtracking reductions before giving up, >= 1.")
       .def_property(
           "projection",
-          [](const NewtonSettings& s) { return enum_name(s.projection, kProjections); },
+          [](const NewtonSettings& s) { return projection_name(s.projection); },
           [](NewtonSettings& s, const std::string& v) {
-            s.projection = parse_enum(v, kProjections, "Hessian projection");
+            s.projection = projection_from(v);
           },
           "'when_indefinite' (the exact Hessian first, projected where it meets negative "
           "curvature), 'always' (projected) or 'with_terms' (projected while energy terms "

@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 
+#include "animkit/collision/closest_points.h"
 #include "animkit/collision/distance_type.h"
 #include "animkit/collision/edge_edge_mollifier.h"
 #include "animkit/collision/psd_projection.h"
@@ -35,15 +36,11 @@ SphereGap sphere_gap(double q, double radius) {
 // a tilted plane slid under the centre rises or falls there. Nothing else moves s at first or
 // second order, so the 9 x 9 block is B^T K B with K = B H B^T its 5 x 5 part.
 std::optional<Eigen::Matrix<double, 5, 9>> face_gap_basis(const std::array<Vec3, 4>& p) {
-  const Vec3 e1 = p[2] - p[1], e2 = p[3] - p[1], to_centre = p[0] - p[1];
+  const Vec3 e1 = p[2] - p[1], e2 = p[3] - p[1];
   const Vec3 normal = e1.cross(e2);
-  const double d00 = e1.squaredNorm(), d01 = e1.dot(e2), d11 = e2.squaredNorm();
-  const double twice_area2 = normal.squaredNorm();  // d00 d11 - d01^2
-  if (!(twice_area2 > 1e-12 * d00 * d11)) return std::nullopt;
-  const double d20 = to_centre.dot(e1), d21 = to_centre.dot(e2);
-  const double b2 = (d11 * d20 - d01 * d21) / twice_area2;
-  const double b3 = (d00 * d21 - d01 * d20) / twice_area2;
-  const Eigen::Vector3d beta = Eigen::Vector3d(1.0 - b2 - b3, b2, b3).normalized();
+  if (!(normal.squaredNorm() > 1e-12 * e1.squaredNorm() * e2.squaredNorm())) return std::nullopt;
+  const std::array<double, 3> under = closest_on_triangle(p[0], p[1], p[2], p[3]);
+  const Eigen::Vector3d beta = Eigen::Vector3d(under[0], under[1], under[2]).normalized();
   const Vec3 n = normal.normalized(), t1 = e1.normalized(), t2 = n.cross(t1);
   Eigen::Matrix<double, 5, 9> basis = Eigen::Matrix<double, 5, 9>::Zero();
   for (int v = 0; v < 3; ++v) {
