@@ -47,6 +47,12 @@ fuzz_target() {
     local input
     input="$(grep -o 'Test unit written to .*' "$log" | tail -n 1 | sed 's/Test unit written to //')"
     echo "$target: ${input:-no input written} (exit $status; log $log)" >"$results/$target"
+    # The input itself, so a failure seen only in a CI log can be replayed elsewhere.
+    if [ -n "$input" ] && [ -f "$input" ] && [ "$(stat -c %s "$input")" -le 4096 ]; then
+      echo "    the input, base64: $(base64 -w 0 "$input")" >>"$results/$target"
+      grep -m 1 -E 'fuzz check failed|==ERROR|runtime error' "$log" |
+        sed 's/^/    /' >>"$results/$target"
+    fi
     echo "fuzz: $target crashed:"
     grep -m 1 -A 12 -E '==ERROR|ERROR: libFuzzer|fuzz check failed|runtime error' "$log" |
       sed 's/^/  /'

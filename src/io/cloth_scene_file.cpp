@@ -301,7 +301,7 @@ Result<ClothWorldDesc> parse_cloth_scene(std::string_view text, std::string_view
 Result<ClothWorldDesc> read_cloth_scene(const std::filesystem::path& path) {
   auto bytes = read_file_bytes(path, kMaxSceneFileBytes);
   if (!bytes) return fail(bytes.error().message);
-  return parse_cloth_scene(*bytes, path.string(), path.parent_path());
+  return parse_cloth_scene(*bytes, shown_path(path.string()), path.parent_path());
 }
 
 }  // namespace animkit

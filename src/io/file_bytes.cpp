@@ -10,7 +10,7 @@
 namespace animkit {
 
 Result<std::string> read_file_bytes(const std::filesystem::path& path, std::uintmax_t max_bytes) {
-  const std::string name = sanitize_message(path.string());  // a NUL or escape shown escaped
+  const std::string name = shown_path(path.string());  // a NUL or escape shown escaped
   // The operating system reads a path up to its first NUL: "scene.json\0x" would open
   // scene.json, and a message would show only that part.
   if (path.native().find('\0') != std::string::npos)

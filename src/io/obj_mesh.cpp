@@ -137,7 +137,7 @@ Result<TriangleMesh> parse_obj_mesh(std::string_view text, std::string_view name
 Result<TriangleMesh> read_obj_mesh(const std::filesystem::path& path) {
   auto bytes = read_file_bytes(path, kMaxObjFileBytes);
   if (!bytes) return fail(bytes.error().message);
-  return parse_obj_mesh(*bytes, path.string());
+  return parse_obj_mesh(*bytes, shown_path(path.string()));
 }
 
 }  // namespace animkit

@@ -53,5 +53,22 @@ TEST(SanitizeMessage, EscapesCountAgainstTheBudget) {
   EXPECT_EQ(quote_input("\xc3\xa9\xc3\xa9\xc3\xa9", 2), "'\xc3\xa9\xc3\xa9...' (6 bytes)");
 }
 
+// A long path keeps its start and its file name; escapes count against the budget there too.
+TEST(ShownPath, ShortPathsAsTheyAreLongOnesKeepBothEnds) {
+  EXPECT_EQ(shown_path("/tmp/scene.json"), "/tmp/scene.json");
+  EXPECT_EQ(shown_path("/tmp/a\nb.obj"), "/tmp/a\\nb.obj");
+  const std::string long_path = "/home/" + std::string(200, 'x') + "/drape.json";
+  const std::string shown = shown_path(long_path, 30);
+  EXPECT_EQ(shown, "/home/xxxx...xxxxxx/drape.json");
+  EXPECT_LE(shown.size(), 30u);
+  // 300 C1 controls would show as 1,800 characters; 4-byte characters count one each.
+  std::string controls;
+  for (int i = 0; i < 300; ++i) controls += "\xc2\x85";
+  EXPECT_EQ(shown_path(controls, 13), "...\\u0085");
+  std::string emoji;
+  for (int i = 0; i < 300; ++i) emoji += "\xf0\x9f\x98\x80";
+  EXPECT_EQ(shown_path(emoji, 30).size(), 4u * 27 + 3);
+}
+
 }  // namespace
 }  // namespace animkit

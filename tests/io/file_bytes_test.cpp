@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "animkit/core/quote.h"
 #include "../support/temp_files.h"
 
 namespace animkit {
@@ -29,6 +30,15 @@ TEST(FileBytes, ReadsAFileWholeAndRefusesWhatIsNotOne) {
   const std::string with_nul = (dir / "small.txt").string() + std::string(1, '\0') + ".json";
   EXPECT_EQ(read_file_bytes(with_nul, 100).error().message,
             (dir / "small.txt").string() + "\\x00.json: a path cannot hold a NUL byte");
+}
+
+// A path from a scene file can be any length: the message keeps its start and the file's name.
+TEST(FileBytes, ALongPathIsShownByItsEnds) {
+  const std::string path = "/nonexistent/" + std::string(2000, 'x') + "/none.obj";
+  const std::string message = read_file_bytes(path, 100).error().message;
+  EXPECT_TRUE(message.starts_with("/nonexistent/")) << message;
+  EXPECT_TRUE(message.ends_with("/none.obj: no such file")) << message;
+  EXPECT_LE(message.size(), kShownPathChars + std::string(": no such file").size());
 }
 
 TEST(FileBytes, ReadsAPipeUpToTheLimit) {

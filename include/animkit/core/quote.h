@@ -22,4 +22,12 @@ std::string quote_input(std::string_view raw, std::size_t max_chars = kQuotedInp
 /// (e.g. the CLI's last line of defence before printing any error).
 std::string sanitize_message(std::string_view raw, std::size_t max_chars = 1000);
 
+/// How many characters of a path an error message shows at most.
+constexpr std::size_t kShownPathChars = 120;
+
+/// A file's path made safe the same way, for an error message: one longer than `max_chars`
+/// characters shows its start and its end (the file's name) around "...", e.g.
+/// "/home/me/scenes/...long/drape.json".
+std::string shown_path(std::string_view raw, std::size_t max_chars = kShownPathChars);
+
 }  // namespace animkit
