@@ -5,7 +5,7 @@
 # logs to BUILD_DIR/logs/<name>.log. A crash counts when its input crashes again run on its
 # own; one that does not is reported with its input and does not fail the run. Exits 1 after
 # all targets ran if any crash counted, naming each target, its input file, the input in base64
-# and the fault's first line. FUZZ_SEED=N fixes libFuzzer's random seed (CI does); a crash CI
+# and the fault's first lines. FUZZ_SEED=N fixes libFuzzer's random seed (CI does); a crash CI
 # found with it has still not always come back elsewhere, hence the base64.
 # FUZZ_JOBS targets (default: one a core) run at once; each fuzzer is one process on one core.
 set -uo pipefail
@@ -21,7 +21,8 @@ mkdir -p "$results"
 # assertion, an exception nothing caught, libFuzzer's own verdict.
 faults='fuzz check failed|==ERROR|ERROR: libFuzzer|runtime error|Assertion|terminate called|what\(\)'
 
-# Fuzzes one target; prints what it found and leaves one line in $results/<target> if it failed.
+# Fuzzes one target; prints what it found and, after a crash, leaves its summary lines in
+# $results/<target> (a failure) or $results/unrepeated-<target> (its input ran clean alone).
 fuzz_target() {
   local target="$1"
   local name="${target%_fuzz}"
