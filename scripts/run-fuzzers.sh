@@ -106,4 +106,8 @@ if [ ${#failures[@]} -gt 0 ]; then
   echo "Keep each input as a regression: fix the bug, then copy it to fuzz/regressions/<name>/." >&2
   exit 1
 fi
-echo "fuzz: every target ran ${seconds} s without a crash"
+if [ ${#unrepeated[@]} -gt 0 ]; then
+  echo "fuzz: every target ran ${seconds} s; no crash repeated on its own input"
+else
+  echo "fuzz: every target ran ${seconds} s without a crash"
+fi
