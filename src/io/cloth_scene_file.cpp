@@ -241,36 +241,31 @@ class SceneReader {
     }
     if (auto tolerance = fields.number("tolerance"))
       set_tolerance(simulation.integrator, *tolerance);
-    // Newton's own stopping and CG settings (their ranges are checked with the integrator's).
-    for (auto [key, setting] :
-         {std::pair{"velocity_tolerance", &NewtonSettings::velocity_tolerance},
-          std::pair{"linear_forcing", &NewtonSettings::linear_forcing}}) {
-      const auto value = fields.number(key);
-      if (!value) continue;
+    // Newton's own settings: the named Newton integrator's, which `key` then changes (their
+    // ranges are checked with the integrator's).
+    const auto newton_for = [&](const char* key) -> NewtonSettings& {
       auto* newton = std::get_if<NewtonSettings>(&simulation.integrator);
-      if (desc.choose_integrator) {  // the winner's own settings replace the default's
+      if (desc.choose_integrator)  // the winner's own settings replace the default's
         fields.error(key, "applies to a named Newton integrator, not 'auto'");
-      }
       if (!newton) {
         fields.error(key, "applies to the Newton integrators (implicit-*) only, not " +
                               quote_input(integrator_entry(simulation.integrator).name));
       }
-      newton->*setting = *value;
+      return *newton;
+    };
+    for (auto [key, setting] :
+         {std::pair{"velocity_tolerance", &NewtonSettings::velocity_tolerance},
+          std::pair{"linear_forcing", &NewtonSettings::linear_forcing}}) {
+      if (const auto value = fields.number(key)) newton_for(key).*setting = *value;
     }
     if (auto name = fields.string("projection")) {
-      auto* newton = std::get_if<NewtonSettings>(&simulation.integrator);
-      if (desc.choose_integrator)
-        fields.error("projection", "applies to a named Newton integrator, not 'auto'");
-      if (!newton) {
-        fields.error("projection", "applies to the Newton integrators (implicit-*) only, not " +
-                                       quote_input(integrator_entry(simulation.integrator).name));
-      }
+      NewtonSettings& newton = newton_for("projection");
       const auto projection = enum_named<HessianProjection>(kHessianProjectionNames, *name);
       if (!projection) {
         fields.error("projection", "expected one of " + joined_names(kHessianProjectionNames) +
                                        ", got " + quote_input(*name));
       }
-      newton->projection = *projection;
+      newton.projection = *projection;
     }
     simulation.substeps = fields.integer("substeps").value_or(simulation.substeps);
     fields.finish();

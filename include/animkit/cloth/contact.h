@@ -73,7 +73,7 @@ inline constexpr double kCollapsedGapFraction = 1e-3;
 inline constexpr std::array<std::string_view, 3> kBarrierHessianNames = {
     "projected", "gauss_newton", "adaptive"};
 inline std::string_view barrier_hessian_name(BarrierHessian hessian) {
-  return kBarrierHessianNames[static_cast<std::size_t>(hessian)];
+  return enum_name(kBarrierHessianNames, hessian);
 }
 /// The choice called `name`, or none.
 inline std::optional<BarrierHessian> barrier_hessian_named(std::string_view name) {
