@@ -43,6 +43,7 @@
 #include "drape_scene.h"
 #include "intersection_audit.h"
 #include "ratio_reporter.h"
+#include "reference_steps.h"
 
 namespace {
 
@@ -134,20 +135,9 @@ struct Variant {
   bool compare = false;
 };
 
-// The largest distance between the two solvers' particles, m.
-double max_distance(const animkit::ClothState& a, const animkit::ClothState& b) {
-  return (a.positions - b.positions)
-      .reshaped(3, a.positions.size() / 3)
-      .colwise()
-      .norm()
-      .maxCoeff();
-}
-
 void animkit_drape(benchmark::State& state, int particles, int frames, Variant variant = {}) {
   animkit::ClothWorldDesc desc = animkit::bench::drape_world(particles, frames);
   variant.settings(desc);
-  animkit::ClothWorldDesc reference_desc = animkit::bench::drape_world(particles, frames);
-  animkit::use_reference_contact_settings(reference_desc);
   const auto& grid = std::get<animkit::GridClothOptions>(desc.cloth);
   const animkit::bench::DrapeParts parts = animkit::bench::drape_parts(desc);
   for (auto _ : state) {
@@ -161,17 +151,16 @@ void animkit_drape(benchmark::State& state, int particles, int frames, Variant v
     const animkit::Collider& ball = world->colliders.front();
     const TriangleMesh ball_surface{ball.world_vertices(), ball.model().surface.triangles};
     TriangleMesh cloth{{}, sim.model().triangles};
-    std::vector<double> ms, cpu, apart;
+    std::vector<double> ms, cpu;
     double newton = 0, cg = 0, converged = 0;
     Audit audit;
-    std::optional<animkit::ClothWorld> reference;
-    if (variant.compare) reference.emplace(*animkit::build_cloth_world(reference_desc));
+    std::optional<animkit::bench::ReferenceSteps> reference;
+    if (variant.compare) reference.emplace(animkit::bench::drape_world(particles, frames));
     state.ResumeTiming();
     for (int frame = 1; frame <= desc.frames; ++frame) {
       if (reference) {
         state.PauseTiming();
-        (void)reference->simulator.set_state(sim.state());
-        (void)reference->simulator.step(desc.time_step);
+        reference->step_from(sim.state(), desc.time_step);
         state.ResumeTiming();
       }
       const double cpu0 = cpu_ms();
@@ -192,8 +181,8 @@ void animkit_drape(benchmark::State& state, int particles, int frames, Variant v
         cloth.vertices[i] = sim.state().position(i);
       audit.frame(cloth, ball_surface, parts);
       if (reference) {
-        apart.push_back(max_distance(sim.state(), reference->simulator.state()));
-        std::fprintf(stderr, "%.3f mm from the reference; ", 1e3 * apart.back());
+        const double apart = reference->compare(sim.state());
+        std::fprintf(stderr, "%.3f mm from the reference; ", 1e3 * apart);
       }
       std::fprintf(stderr,
                    "animkit %dx%d frame %d/%d: %.1f ms (cpu %.1f), %d Newton, %d CG, "
@@ -213,11 +202,7 @@ void animkit_drape(benchmark::State& state, int particles, int frames, Variant v
     report_times(state, ms, cpu);
     state.counters["newton"] = newton / steps;
     state.counters["cg"] = cg / steps;
-    if (!apart.empty()) {
-      std::sort(apart.begin(), apart.end());
-      state.counters["apart_mm_median"] = 1e3 * apart[apart.size() / 2];
-      state.counters["apart_mm_max"] = 1e3 * apart.back();
-    }
+    if (reference) reference->report(state);
     state.counters["converged"] = converged / steps;
     audit.report(state);
     report_strain(state, grid_axis_strain(cloth.vertices, grid.cells, grid.size / grid.cells));

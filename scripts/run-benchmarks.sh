@@ -3,7 +3,7 @@
 # and writes one JSON file per program into bench/results/ (Google Benchmark's own format, with
 # the commit added to its context), then regenerates the page from them:
 #
-#   make bench    (or, after make build: bash scripts/run-benchmarks.sh [BUILD_DIR]; about 15
+#   make bench    (or, after make build: bash scripts/run-benchmarks.sh [BUILD_DIR]; about 20
 #                 minutes on 2 cores)
 #
 # BUILD_DIR is the Release tree (build/release by default). Close other programs first: the
@@ -44,6 +44,7 @@ run multigrid_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only
 run parallel_bench
 run fast_collider_bench
 run broad_phase_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+run scenes_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 run drape_bench --benchmark_filter='^drape/(animkit/41x41(/fast)?|bullet/41x41)/iterations'
 python3 scripts/performance-page.py "$results" docs/performance.md
 echo "wrote $results/*.json and docs/performance.md"

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <set>
 
-#include "../support/intersection_audit.h"
+#include "../support/world_audit.h"
 
 namespace animkit {
 namespace {
@@ -40,38 +40,11 @@ TEST_P(BuiltinSceneAuditSlow, EveryFrameIsIntersectionFreeAndConverged) {
   auto world = build_cloth_world(desc);
   ASSERT_TRUE(world) << world.error().message;
   ClothSimulator& sim = world->simulator;
-  TriangleMesh cloth{{}, sim.model().triangles};
   for (int frame = 1; frame <= desc.frames; ++frame) {
     auto step = sim.step(desc.time_step);
     ASSERT_TRUE(step) << "frame " << frame << ": " << step.error().message;
     ASSERT_TRUE(step->converged) << "frame " << frame;
-    cloth.vertices.clear();
-    for (int i = 0; i < sim.model().particle_count(); ++i) {
-      cloth.vertices.push_back(sim.state().position(i));
-      if (desc.ground) {
-        ASSERT_GT(sim.state().position(i).y(), desc.ground->height) << "frame " << frame;
-      }
-    }
-    ASSERT_EQ(audit::count_self_intersections(cloth), 0) << "frame " << frame;
-    // Each collider's surface as contact had it at the frame's end: its pose at that time (a
-    // sphere keeps its first orientation, its spin being friction's business only).
-    const Eigen::VectorXd obstacles =
-        world->contact ? world->contact->collider_points() : Eigen::VectorXd();
-    int first = 0;
-    for (Collider& collider : world->colliders) {
-      collider.set_time(frame * desc.time_step);
-      TriangleMesh surface{{}, collider.model().surface.triangles};
-      for (std::size_t i = 0; i < collider.world_vertices().size(); ++i) {
-        surface.vertices.push_back(obstacles.segment<3>(3 * (first + static_cast<int>(i))));
-        if (!std::holds_alternative<SphereShape>(collider.model().desc.shape)) {
-          ASSERT_LT((surface.vertices.back() - collider.world_vertices()[i]).norm(), 1e-9)
-              << "frame " << frame << ": " << collider.name() << " is not where it should be";
-        }
-      }
-      first += static_cast<int>(surface.vertices.size());
-      ASSERT_FALSE(audit::meshes_intersect(cloth, surface))
-          << "frame " << frame << " meets " << collider.name();
-    }
+    ASSERT_EQ(audit::world_frame_problem(*world, desc, frame), "") << "frame " << frame;
   }
 }
 
