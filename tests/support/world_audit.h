@@ -10,8 +10,9 @@
 namespace animkit::audit {
 
 /// What is wrong with `world` at the end of frame `frame` (its simulator having stepped it),
-/// or empty: "meets ball", "self-intersects", "under the ground", or a collider's surface that
-/// contact moved elsewhere than the collider's own pose at that time. `desc` is the world's
+/// or empty: "particle 12 is on or under the ground", "the cloth intersects itself", "the
+/// cloth meets ball", or "ball is not where it should be" (a collider's surface that contact
+/// moved elsewhere than the collider's own pose at that time). `desc` is the world's
 /// description (its ground and time step). Moves each collider to the frame's time.
 std::string world_frame_problem(ClothWorld& world, const ClothWorldDesc& desc, int frame);
 
