@@ -40,7 +40,7 @@ TEST(WorldAudit, ASheetAboveEverythingHasNoProblem) {
 TEST(WorldAudit, ASheetThroughTheBallMeetsIt) {
   std::array<double, 2> ball_y{};
   (void)problem_with_sheet_at(std::nullopt, &ball_y);
-  EXPECT_EQ(problem_with_sheet_at(0.5 * (ball_y[0] + ball_y[1]), &ball_y),
+  EXPECT_EQ(problem_with_sheet_at(0.5 * (ball_y[0] + ball_y[1])),
             "the cloth meets " + find_cloth_scene("drape-sphere")->make().colliders.front().name);
 }
 
